@@ -1,0 +1,153 @@
+#include "detection/contact_detector.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "friction/sommerfeld.hpp"
+
+namespace dilatant {
+
+namespace {
+// A non-periodic axis spanned by far-flung particles must not explode the grid.
+constexpr int kMaxCellsPerAxis = 512;
+}  // namespace
+
+void finish_contact(const Bodies& b, Contact& c) {
+  const double im_i = b.inv_mass[c.i];
+  const double ii_i = b.inv_inertia[c.i];
+  c.arm_i = b.radius[c.i];
+  double w_n = im_i;
+  double w_t = im_i + ii_i * c.arm_i * c.arm_i;
+  if (!c.with_plane()) {
+    const double im_j = b.inv_mass[c.other];
+    const double ii_j = b.inv_inertia[c.other];
+    c.arm_j = b.radius[c.other];
+    w_n += im_j;
+    w_t += im_j + ii_j * c.arm_j * c.arm_j;
+    c.reduced_radius = reduced_radius(c.arm_i, c.arm_j);
+  } else {
+    c.arm_j = 0.0;
+    c.reduced_radius = reduced_radius_on_plane(c.arm_i);
+  }
+  c.w_n = w_n;
+  c.w_t = w_t;
+}
+
+void ContactDetector::build_cells(const World& world, double cell_size) {
+  const Bodies& b = world.bodies;
+  const std::size_t n = b.size();
+  Vec3 lo = Vec3::Constant(0.0), hi = Vec3::Constant(0.0);
+  if (n > 0) {
+    lo = hi = world.box.wrap(b.position[0]);
+    for (std::size_t i = 1; i < n; ++i) {
+      const Vec3 x = world.box.wrap(b.position[i]);
+      lo = lo.cwiseMin(x);
+      hi = hi.cwiseMax(x);
+    }
+  }
+  for (int k = 0; k < 3; ++k) {
+    if (world.box.periodic[k]) {
+      origin_[k] = 0.0;
+      n_cells_[k] = std::max(1, static_cast<int>(world.box.length[k] / cell_size));
+      cell_edge_[k] = world.box.length[k] / n_cells_[k];
+    } else {
+      origin_[k] = lo[k];
+      const double extent = hi[k] - lo[k];
+      n_cells_[k] = std::clamp(static_cast<int>(extent / cell_size) + 1, 1, kMaxCellsPerAxis);
+      cell_edge_[k] = std::max(cell_size, extent / n_cells_[k] * (1.0 + 1e-12));
+    }
+  }
+  const int total = n_cells_[0] * n_cells_[1] * n_cells_[2];
+  cell_start_.assign(static_cast<std::size_t>(total) + 1, 0);
+  body_cell_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 x = world.box.wrap(b.position[i]);
+    std::array<int, 3> c{};
+    for (int k = 0; k < 3; ++k) {
+      c[k] = std::clamp(static_cast<int>((x[k] - origin_[k]) / cell_edge_[k]), 0, n_cells_[k] - 1);
+    }
+    body_cell_[i] = (c[2] * n_cells_[1] + c[1]) * n_cells_[0] + c[0];
+    ++cell_start_[body_cell_[i] + 1];
+  }
+  for (int c = 0; c < total; ++c) cell_start_[c + 1] += cell_start_[c];
+  cell_body_.resize(n);
+  std::vector<std::int32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
+  for (std::size_t i = 0; i < n; ++i) cell_body_[fill[body_cell_[i]]++] = static_cast<std::int32_t>(i);
+}
+
+void ContactDetector::add_pair_contacts(const World& world, double margin,
+                                        std::vector<Contact>& contacts) {
+  const Bodies& b = world.bodies;
+  std::array<int, 27> neighbours{};
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    const int ci = body_cell_[i];
+    const int cx = ci % n_cells_[0], cy = (ci / n_cells_[0]) % n_cells_[1],
+              cz = ci / (n_cells_[0] * n_cells_[1]);
+    // Neighbour cells, each once even when a periodic axis has fewer than 3 cells.
+    int count = 0;
+    for (int dz = -1; dz <= 1; ++dz) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          std::array<int, 3> c = {cx + dx, cy + dy, cz + dz};
+          bool inside = true;
+          for (int k = 0; k < 3; ++k) {
+            if (c[k] >= 0 && c[k] < n_cells_[k]) continue;
+            if (!world.box.periodic[k]) { inside = false; break; }
+            c[k] = (c[k] + n_cells_[k]) % n_cells_[k];
+          }
+          if (inside) neighbours[count++] = (c[2] * n_cells_[1] + c[1]) * n_cells_[0] + c[0];
+        }
+      }
+    }
+    std::sort(neighbours.begin(), neighbours.begin() + count);
+    count = static_cast<int>(std::unique(neighbours.begin(), neighbours.begin() + count) -
+                             neighbours.begin());
+    for (int q = 0; q < count; ++q) {
+      const int cell = neighbours[q];
+      for (int s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s) {
+        const auto j = static_cast<std::size_t>(cell_body_[s]);
+        if (j <= i || (b.is_fixed(i) && b.is_fixed(j))) continue;
+        const Vec3 d = world.box.minimum_image(b.position[i], b.position[j]);
+        const double dist = d.norm();
+        const double gap = dist - b.radius[i] - b.radius[j];
+        if (gap > margin) continue;
+        Contact c;
+        c.i = static_cast<std::int32_t>(i);
+        c.other = static_cast<std::int32_t>(j);
+        c.normal = dist > 0.0 ? Vec3(d / dist) : Vec3::UnitZ();
+        c.gap = gap;
+        contacts.push_back(c);
+      }
+    }
+  }
+}
+
+void ContactDetector::detect(const World& world, double margin, std::vector<Contact>& contacts) {
+  contacts.clear();
+  const Bodies& b = world.bodies;
+  double r_max = 0.0;
+  for (double r : b.radius) r_max = std::max(r_max, r);
+  build_cells(world, 2.0 * r_max + margin);
+  add_pair_contacts(world, margin, contacts);
+  // Sphere pairs come out grouped by i; sort by (i, j) for a reproducible order.
+  std::sort(contacts.begin(), contacts.end(), [](const Contact& a, const Contact& c) {
+    return a.i != c.i ? a.i < c.i : a.other < c.other;
+  });
+  for (std::size_t k = 0; k < world.planes.size(); ++k) {
+    const Plane& plane = world.planes[k];
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      if (b.is_fixed(i)) continue;
+      const double gap = plane.distance(b.position[i]) - b.radius[i];
+      if (gap > margin) continue;
+      Contact c;
+      c.i = static_cast<std::int32_t>(i);
+      c.other = -static_cast<std::int32_t>(k) - 1;
+      c.normal = plane.normal;
+      c.gap = gap;
+      contacts.push_back(c);
+    }
+  }
+  for (Contact& c : contacts) finish_contact(b, c);
+}
+
+}  // namespace dilatant

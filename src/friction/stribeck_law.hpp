@@ -1,0 +1,36 @@
+#pragma once
+// The simplified Stribeck curve of the paper (Eq. 1) with our cap beyond s_lim:
+//
+//     mu(s) = mu0                        s <  s_c            boundary lubrication (BL)
+//     mu(s) = 2 pi s ln(5 / (6 pi s))    s_c <= s < s_lim    hydrodynamic (HD)
+//     mu(s) = mu(s_lim)                  s >= s_lim          outside lubrication theory
+//
+// Because mu depends on the sliding speed, one contact's local problem can have
+// several consistent answers. We resolve it deterministically (SPEC §1):
+//   1. stick, if the sticking impulse |u_t_free|/w_t lies in the mu0 cone;
+//   2. else slide with mu0, if the resulting speed gives s < s_c;
+//   3. else slide on the HD branch: find v_s > 0 with
+//          f(v_s) = v_s + w_t p_n mu(k v_s) - |u_t_free| = 0,   k = eta_f R_p dt / p_n,
+//      (s = k v_s because N = p_n/dt). f(v_c) <= 0 at v_c = s_c/k (step 2 failed
+//      and mu_HD(s_c) < mu0) and f(|u_t_free|) >= 0, so a root lies in between;
+//      mu is increasing on the HD branch up to s = 5/(6 pi e) ~ 0.0976, so f is
+//      monotone there and the root is unique. We find it by Newton's method
+//      safeguarded by bisection.
+//  The paper's HD formula needs s_c < 5/(6 pi) for mu > 0; the config checks it.
+#include "friction/tangential_problem.hpp"
+
+namespace dilatant {
+
+struct StribeckLaw {
+  double mu0 = 0.1;
+  double s_c = 5e-5;
+  double s_lim = 0.1;
+  double eta_f = 0.0;  // fluid viscosity, in the units of the simulation
+
+  // Lubrication-theory friction (paper, Supplemental Material), no cap.
+  static double hydrodynamic_mu(double s);
+  double mu(double s) const;
+  TangentialSolution solve(const TangentialProblem& p) const;
+};
+
+}  // namespace dilatant

@@ -1,0 +1,76 @@
+#pragma once
+// Contact Dynamics solver: nonlinear Gauss–Seidel over contacts (Moreau 1994,
+// Jean 1999; Brendel, Unger & Wolf 2004 for granular flows).
+//
+// The local problem of one contact, others frozen
+// ------------------------------------------------
+// Body i touches partner j at x_i - r_i n (n points from j to i). The relative
+// velocity of i's surface with respect to j's at the contact point is
+//
+//     u = v_i - v_j - (r_i w_i + r_j w_j) x n .
+//
+// An impulse P on i (and -P on j) changes it by u -> u + W P with the Delassus
+// operator of two spheres, I_k = 2/5 m_k r_k^2:
+//
+//     W = (1/m_i + 1/m_j) nn^T + (1/m_i + 1/m_j + r_i^2/I_i + r_j^2/I_j) (1 - nn^T)
+//       =        w_n      nn^T +                 w_t                    (1 - nn^T)
+//
+// (because (n x P) x n = P_t). W is diagonal in the contact frame, so the normal
+// and tangential parts decouple and each is solved exactly in closed form:
+//
+//   normal (Signorini, zero restitution, gap g at the start of the step): the
+//   surfaces may close the gap but not overlap at the end of the step,
+//       g + dt u_n >= 0,  p_n >= 0,  p_n (g + dt u_n) = 0
+//   =>  p_n = max(0, -(u_n_free + g/dt) / w_n),
+//   where u_n_free is u_n without this contact's impulse;
+//
+//   tangential: the friction law, given u_t_free, w_t, p_n (friction/).
+//
+// The sweep
+// ---------
+// Velocities always hold v_free + M^-1 H P for the current impulses P, so
+// visiting a contact costs one gather of two bodies, the local solve, and one
+// scatter of the impulse change. Sweeps repeat until the relative change of the
+// impulse vector,
+//
+//     residual = sqrt( sum_c |P_c^new - P_c^old|^2 / sum_c |P_c^new|^2 ),
+//
+// drops to `tolerance` (0 when no contact carries load and nothing changed),
+// or `max_iterations` sweeps have run; then the step is reported unconverged.
+// Warm start: impulses of the previous step are applied before the first sweep.
+#include <vector>
+
+#include "friction/friction_law.hpp"
+#include "solver/contact.hpp"
+#include "world/bodies.hpp"
+
+namespace dilatant {
+
+struct SolverSettings {
+  double tolerance = 1e-6;   // on the relative impulse change of one sweep
+  int max_iterations = 1000;
+};
+
+struct SolveReport {
+  int iterations = 0;
+  double residual = 0.0;
+  bool converged = true;
+};
+
+// Sums accumulated over one sweep, from which the residual follows.
+struct SweepChange {
+  double change_squared = 0.0;   // sum |dP|^2
+  double impulse_squared = 0.0;  // sum |P|^2
+};
+
+// Adds M^-1 H P of the contacts' current impulses to the body velocities.
+void apply_impulses(const std::vector<Contact>& contacts, Bodies& bodies);
+
+// One Gauss–Seidel pass over all contacts in order.
+SweepChange gauss_seidel_sweep(std::vector<Contact>& contacts, Bodies& bodies,
+                               const FrictionLaw& law, double dt);
+
+SolveReport solve_contacts(std::vector<Contact>& contacts, Bodies& bodies, const FrictionLaw& law,
+                           double dt, const SolverSettings& settings);
+
+}  // namespace dilatant

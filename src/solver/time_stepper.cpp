@@ -1,0 +1,87 @@
+#include "solver/time_stepper.hpp"
+
+#include <algorithm>
+
+namespace dilatant {
+
+double TimeStepper::detection_margin(const World& world) const {
+  // Two surfaces approach at most at the sum of their speeds; during the
+  // solve an impulse can speed a body up, so allow twice the largest predicted
+  // approach, plus a small floor so that resting contacts are always found.
+  const Bodies& b = world.bodies;
+  double v_max = 0.0, r_max = 0.0;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    v_max = std::max(v_max, b.velocity[i].norm() + b.radius[i] * b.angular_velocity[i].norm());
+    r_max = std::max(r_max, b.radius[i]);
+  }
+  return 4.0 * v_max * dt_ + 1e-3 * r_max;
+}
+
+void TimeStepper::warm_start(Bodies& bodies) {
+  for (Contact& c : contacts_) {
+    const auto it = last_impulse_.find(contact_key(c));
+    if (it == last_impulse_.end()) continue;
+    // The normal may have turned since the last step: keep the part of the old
+    // impulse that is still compressive, and its tangential part in the new plane.
+    const Vec3& p = it->second;
+    c.p_n = std::max(0.0, p.dot(c.normal));
+    c.p_t = p - p.dot(c.normal) * c.normal;
+  }
+  apply_impulses(contacts_, bodies);
+}
+
+double TimeStepper::largest_overlap(const World& world) const {
+  double overlap = 0.0;
+  const Bodies& b = world.bodies;
+  for (const Contact& c : contacts_) {
+    double gap;
+    if (c.with_plane()) {
+      gap = world.planes[c.plane_index()].distance(b.position[c.i]) - b.radius[c.i];
+    } else {
+      gap = world.box.minimum_image(b.position[c.i], b.position[c.other]).norm() -
+            b.radius[c.i] - b.radius[c.other];
+    }
+    overlap = std::max(overlap, -gap);
+  }
+  return overlap;
+}
+
+StepReport TimeStepper::step(World& world) {
+  Bodies& b = world.bodies;
+  StepReport report;
+
+  // 1. predict
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    if (b.is_fixed(i)) continue;
+    Vec3 a = world.gravity;
+    if (!world.external_force.empty()) a += b.inv_mass[i] * world.external_force[i];
+    b.velocity[i] += dt_ * a;
+  }
+  report.kinetic_energy_free = b.kinetic_energy();
+
+  // 2. detect, 3. warm start, 4. solve
+  detector_.detect(world, detection_margin(world), contacts_);
+  warm_start(b);
+  report.solve = solve_contacts(contacts_, b, law_, dt_, settings_);
+
+  // 5. store impulses of the contacts that carry load
+  last_impulse_.clear();
+  for (const Contact& c : contacts_) {
+    if (c.p_n <= 0.0) continue;
+    last_impulse_.emplace(contact_key(c), c.p_n * c.normal + c.p_t);
+    ++report.contacts_closed;
+  }
+  report.contacts_detected = contacts_.size();
+
+  // 6. integrate positions with the end-of-step velocities
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    if (b.is_fixed(i)) continue;
+    b.position[i] = world.box.wrap(b.position[i] + dt_ * b.velocity[i]);
+  }
+  world.time += dt_;
+  report.kinetic_energy = b.kinetic_energy();
+  report.max_overlap = largest_overlap(world);
+  return report;
+}
+
+}  // namespace dilatant
