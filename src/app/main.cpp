@@ -1,1 +1,38 @@
-int main() { return 0; }
+// dilatant: the command-line front end. A thin layer: it parses arguments with
+// CLI11 and calls the library; it owns the exit codes (SPEC §2):
+//   0 success, 2 bad input (one line naming file, key and problem), 1 other failure.
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+
+#include "app/run_command.hpp"
+#include "dilatant/version.hpp"
+#include "io/input_error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "dilatant: Contact Dynamics simulation of dense non-Brownian suspensions that "
+      "shear-thicken (Fernandez et al., PRL 111, 108301, 2013)."};
+  app.set_version_flag("--version", dilatant::kVersion);
+  app.require_subcommand(1);
+  dilatant::RunCommandArgs run_args;
+  CLI::App* run = dilatant::add_run_command(app, run_args);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+    std::cerr << "dilatant: error: " << e.what() << " (see dilatant --help)\n";
+    return 2;
+  }
+  try {
+    if (run->parsed()) return dilatant::execute_run_command(run_args);
+  } catch (const dilatant::InputError& e) {
+    std::cerr << "dilatant: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "dilatant: failed: " << e.what() << "\n";
+    return 1;
+  }
+  return 1;
+}

@@ -1,6 +1,8 @@
 #include "solver/contact_solver.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace dilatant {
 
@@ -75,14 +77,25 @@ SolveReport solve_contacts(std::vector<Contact>& contacts, Bodies& bodies, const
     report.converged = true;
     return report;
   }
+  // Round-off floor of a sweep's impulse changes (see the header).
+  double noise_squared = 0.0;
+  for (const Contact& c : contacts) {
+    double speed = bodies.velocity[c.i].norm() + c.arm_i * bodies.angular_velocity[c.i].norm();
+    if (!c.with_plane()) {
+      speed += bodies.velocity[c.other].norm() + c.arm_j * bodies.angular_velocity[c.other].norm();
+    }
+    const double noise = 16.0 * std::numeric_limits<double>::epsilon() * speed / c.w_n;
+    noise_squared += noise * noise;
+  }
   std::visit(
       [&](const auto& l) {
         while (report.iterations < settings.max_iterations) {
           const SweepChange ch = sweep(contacts, bodies, l, dt);
           ++report.iterations;
+          const double change_squared = std::max(0.0, ch.change_squared - noise_squared);
           report.residual = ch.impulse_squared > 0.0
-                                ? std::sqrt(ch.change_squared / ch.impulse_squared)
-                                : (ch.change_squared > 0.0 ? 1.0 : 0.0);
+                                ? std::sqrt(change_squared / ch.impulse_squared)
+                                : (change_squared > 0.0 ? 1.0 : 0.0);
           if (report.residual <= settings.tolerance) {
             report.converged = true;
             break;

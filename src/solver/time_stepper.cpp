@@ -73,9 +73,9 @@ StepReport TimeStepper::step(World& world) {
   }
   report.contacts_detected = contacts_.size();
 
-  // 6. integrate positions with the end-of-step velocities
+  // 6. integrate positions with the end-of-step velocities (a body of infinite
+  // mass may still move at a prescribed velocity, like a driven wall)
   for (std::size_t i = 0; i < b.size(); ++i) {
-    if (b.is_fixed(i)) continue;
     b.position[i] = world.box.wrap(b.position[i] + dt_ * b.velocity[i]);
   }
   world.time += dt_;

@@ -1,0 +1,57 @@
+#include "app/run_command.hpp"
+
+#include <fmt/format.h>
+
+#include <iostream>
+#include <stdexcept>
+
+#include "drivers/scene_run.hpp"
+#include "io/config.hpp"
+
+namespace dilatant {
+
+CLI::App* add_run_command(CLI::App& app, RunCommandArgs& args) {
+  CLI::App* run = app.add_subcommand(
+      "run",
+      "Run one simulation. CONFIG is a TOML file with a [scene] table (particles from CSV, "
+      "planes, gravity) or a [cell] table (the paper's shear cell). Without CONFIG, runs the "
+      "built-in default cell (phi 0.58, mu0 0.1). Results go to --out: config.toml (resolved), "
+      "summary.json, timeseries.csv, contacts.csv, and trajectory.csv for scenes.");
+  run->add_option("config", args.config, "TOML configuration file")->check(CLI::ExistingFile);
+  run->add_option("-o,--out", args.out, "Output folder (default: out/<config name>)");
+  run->add_option("-s,--set", args.overrides,
+                  "Override a config key: dotted.key=TOML value, e.g. friction.mu0=0.3, "
+                  "'cell.size=[10.0, 6.0, 12.0]', friction.law=coulomb (repeatable)")
+      ->allow_extra_args(false);
+  run->add_flag("-q,--quiet", args.quiet, "No progress or final messages");
+  return run;
+}
+
+int execute_run_command(const RunCommandArgs& args) {
+  const Config config = args.config.empty() ? default_cell_config(args.overrides)
+                                            : load_config(args.config, args.overrides);
+  RunOptions options;
+  options.quiet = args.quiet;
+  options.out_dir = args.out.empty()
+                        ? std::filesystem::path("out") /
+                              (args.config.empty() ? std::string("default")
+                                                   : std::filesystem::path(args.config).stem().string())
+                        : std::filesystem::path(args.out);
+  if (!config.scene) {
+    throw std::runtime_error("the shear-cell mode ([cell]) is not implemented yet");
+  }
+  const SceneOutcome outcome = run_scene(config, options);
+  if (outcome.unconverged_steps > 0) {
+    std::cerr << fmt::format(
+        "dilatant: warning: {} of {} steps did not converge within solver.max_iterations = {} "
+        "(see timeseries.csv, summary.json)\n",
+        outcome.unconverged_steps, outcome.steps, config.solver.max_iterations);
+  }
+  if (!args.quiet) {
+    std::cout << fmt::format("dilatant: {} steps done; results in {}\n", outcome.steps,
+                             options.out_dir.string());
+  }
+  return 0;
+}
+
+}  // namespace dilatant

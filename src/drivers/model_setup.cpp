@@ -1,0 +1,17 @@
+#include "drivers/model_setup.hpp"
+
+namespace dilatant {
+
+FrictionLaw make_friction_law(const FrictionConfig& f, double eta_f) {
+  switch (f.law) {
+    case FrictionLawKind::Coulomb: return CoulombLaw{f.mu0, eta_f};
+    case FrictionLawKind::Stribeck: return StribeckLaw{f.mu0, f.s_c, f.s_lim, eta_f};
+  }
+  return CoulombLaw{f.mu0, eta_f};
+}
+
+SolverSettings make_solver_settings(const SolverConfig& s) {
+  return SolverSettings{s.tolerance, s.max_iterations};
+}
+
+}  // namespace dilatant
