@@ -447,7 +447,8 @@ class RatioReporter : public benchmark::ConsoleReporter {
       if (run.error_occurred || it == run.counters.end()) continue;
       // Single runs, or the mean when --benchmark_repetitions aggregates them.
       if (run.run_type == Run::RT_Aggregate && run.aggregate_name != "mean") continue;
-      ns_[run.run_name.function_name + "/" + run.run_name.args] = it->second.value;
+      // BENCHMARK_CAPTURE names are "function/case", without further arguments.
+      ns_[run.run_name.function_name] = it->second.value;
     }
   }
 

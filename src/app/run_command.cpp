@@ -2,10 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <atomic>
+#include <csignal>
 #include <iostream>
 #include <stdexcept>
 
 #include "drivers/scene_run.hpp"
+#include "drivers/shear_cell_run.hpp"
 #include "io/config.hpp"
 
 namespace dilatant {
@@ -24,22 +27,57 @@ CLI::App* add_run_command(CLI::App& app, RunCommandArgs& args) {
                   "'cell.size=[10.0, 6.0, 12.0]', friction.law=coulomb (repeatable)")
       ->allow_extra_args(false);
   run->add_flag("-q,--quiet", args.quiet, "No progress or final messages");
+  run->add_flag("--resume", args.resume,
+                "Shear cell: continue from OUT/checkpoint.bin (same config) instead of starting "
+                "anew; the result is identical to an uninterrupted run");
   return run;
 }
+
+namespace {
+
+std::atomic<bool> g_stop_requested{false};
+extern "C" void request_stop(int) { g_stop_requested.store(true); }
+
+int run_cell(const Config& config, const RunOptions& options, bool resume) {
+  // SIGINT/SIGTERM: finish the step, write a checkpoint, exit cleanly.
+  std::signal(SIGINT, request_stop);
+  std::signal(SIGTERM, request_stop);
+  const CellOutcome outcome =
+      run_shear_cell(config, CellRunOptions{options, resume, &g_stop_requested});
+  if (outcome.interrupted) {
+    std::cerr << fmt::format(
+        "dilatant: interrupted; checkpoint written to {}; continue with "
+        "--resume\n",
+        (options.out_dir / "checkpoint.bin").string());
+    return 1;
+  }
+  if (outcome.unconverged_steps > 0) {
+    std::cerr << fmt::format(
+        "dilatant: warning: {} of {} steps did not converge within solver.max_iterations = {} "
+        "(see timeseries.csv, summary.json)\n",
+        outcome.unconverged_steps, outcome.steps, config.solver.max_iterations);
+  }
+  if (!options.quiet) {
+    std::cout << fmt::format("dilatant: {} steps{}; results in {}\n", outcome.steps,
+                             outcome.jammed ? " (the cell jammed)" : "", options.out_dir.string());
+  }
+  return 0;
+}
+
+}  // namespace
 
 int execute_run_command(const RunCommandArgs& args) {
   const Config config = args.config.empty() ? default_cell_config(args.overrides)
                                             : load_config(args.config, args.overrides);
   RunOptions options;
   options.quiet = args.quiet;
-  options.out_dir = args.out.empty()
-                        ? std::filesystem::path("out") /
-                              (args.config.empty() ? std::string("default")
-                                                   : std::filesystem::path(args.config).stem().string())
-                        : std::filesystem::path(args.out);
-  if (!config.scene) {
-    throw std::runtime_error("the shear-cell mode ([cell]) is not implemented yet");
-  }
+  options.out_dir =
+      args.out.empty()
+          ? std::filesystem::path("out") /
+                (args.config.empty() ? std::string("default")
+                                     : std::filesystem::path(args.config).stem().string())
+          : std::filesystem::path(args.out);
+  if (config.cell) return run_cell(config, options, args.resume);
   const SceneOutcome outcome = run_scene(config, options);
   if (outcome.unconverged_steps > 0) {
     std::cerr << fmt::format(

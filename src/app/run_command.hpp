@@ -11,6 +11,7 @@ struct RunCommandArgs {
   std::string out;     // empty: out/<config stem>
   std::vector<std::string> overrides;
   bool quiet = false;
+  bool resume = false;
 };
 
 CLI::App* add_run_command(CLI::App& app, RunCommandArgs& args);

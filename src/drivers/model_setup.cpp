@@ -4,8 +4,10 @@ namespace dilatant {
 
 FrictionLaw make_friction_law(const FrictionConfig& f, double eta_f) {
   switch (f.law) {
-    case FrictionLawKind::Coulomb: return CoulombLaw{f.mu0, eta_f};
-    case FrictionLawKind::Stribeck: return StribeckLaw{f.mu0, f.s_c, f.s_lim, eta_f};
+    case FrictionLawKind::Coulomb:
+      return CoulombLaw{f.mu0, eta_f};
+    case FrictionLawKind::Stribeck:
+      return StribeckLaw{f.mu0, f.s_c, f.s_lim, eta_f};
   }
   return CoulombLaw{f.mu0, eta_f};
 }

@@ -13,19 +13,20 @@ namespace dilatant {
 
 namespace {
 
-
 void check_particles(const Config& config, const std::vector<ParticleRecord>& particles) {
   const auto file = config.scene->particles.filename().string();
   for (const ParticleRecord& p : particles) {
     if (p.id < 0) {
-      throw InputError(fmt::format("{}: particle id {}: ids must be >= 0 (negative ids name "
-                                   "planes in contacts.csv)",
-                                   file, p.id));
+      throw InputError(
+          fmt::format("{}: particle id {}: ids must be >= 0 (negative ids name "
+                      "planes in contacts.csv)",
+                      file, p.id));
     }
     if (p.fixed && (p.velocity.norm() > 0.0 || p.angular_velocity.norm() > 0.0)) {
-      throw InputError(fmt::format("{}: particle {}: a fixed particle must have zero velocity "
-                                   "and angular velocity",
-                                   file, p.id));
+      throw InputError(
+          fmt::format("{}: particle {}: a fixed particle must have zero velocity "
+                      "and angular velocity",
+                      file, p.id));
     }
   }
 }
@@ -36,9 +37,10 @@ void check_box(const Config& config, const Bodies& b) {
   for (double r : b.radius) r_max = std::max(r_max, r);
   for (int k = 0; k < 3; ++k) {
     if (scene.periodic[k] && scene.box[k] < 4.0 * r_max) {
-      throw InputError(fmt::format("{}: scene.box[{}] = {}: a periodic axis must be at least 4 "
-                                   "largest radii ({}) long",
-                                   config.source, k, scene.box[k], 4.0 * r_max));
+      throw InputError(
+          fmt::format("{}: scene.box[{}] = {}: a periodic axis must be at least 4 "
+                      "largest radii ({}) long",
+                      config.source, k, scene.box[k], 4.0 * r_max));
     }
   }
 }
@@ -54,9 +56,10 @@ void check_overlaps(const Config& config, const World& world) {
   for (const Contact& c : contacts) {
     if (c.gap >= -tolerance) continue;
     if (c.with_plane()) {
-      throw InputError(fmt::format("{}: particle {} penetrates scene.planes[{}] by {:.3g} "
-                                   "(tolerance {:.3g})",
-                                   file, b.id[c.i], c.plane_index(), -c.gap, tolerance));
+      throw InputError(
+          fmt::format("{}: particle {} penetrates scene.planes[{}] by {:.3g} "
+                      "(tolerance {:.3g})",
+                      file, b.id[c.i], c.plane_index(), -c.gap, tolerance));
     }
     throw InputError(fmt::format("{}: particles {} and {} overlap by {:.3g} (tolerance {:.3g})",
                                  file, b.id[c.i], b.id[c.other], -c.gap, tolerance));
@@ -74,7 +77,8 @@ World build_scene_world(const Config& config, const std::vector<ParticleRecord>&
   world.gravity = scene.gravity;
   world.box.length = scene.box;
   world.box.periodic = scene.periodic;
-  for (const PlaneConfig& p : scene.planes) world.planes.push_back(Plane{p.point, p.normal.normalized()});
+  for (const PlaneConfig& p : scene.planes)
+    world.planes.push_back(Plane{p.point, p.normal.normalized()});
   for (const ParticleRecord& p : particles) {
     world.bodies.add_sphere(p.id, p.position, p.radius, config.density, p.fixed, p.velocity,
                             p.angular_velocity);
@@ -97,9 +101,10 @@ double automatic_time_step(const World& world, const Config& config) {
   if (g > 0.0) t = std::min(t, std::sqrt(r_min / g));
   if (v_max > 0.0) t = std::min(t, r_min / v_max);
   if (!std::isfinite(t)) {
-    throw InputError(fmt::format("{}: solver.dt = 0 (automatic) needs gravity or initial "
-                                 "velocities to set a time scale; give solver.dt",
-                                 config.source));
+    throw InputError(
+        fmt::format("{}: solver.dt = 0 (automatic) needs gravity or initial "
+                    "velocities to set a time scale; give solver.dt",
+                    config.source));
   }
   return std::min(0.01 * t, config.scene->trajectory_interval);
 }

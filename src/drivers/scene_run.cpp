@@ -74,9 +74,10 @@ SceneOutcome run_scene(const Config& config, const RunOptions& options) {
   World world = build_scene_world(config, read_particles_csv(scene.particles));
   const double dt = config.solver.dt > 0.0 ? config.solver.dt : automatic_time_step(world, config);
   if (dt > scene.trajectory_interval) {
-    throw InputError(fmt::format("{}: scene.trajectory_interval = {} is shorter than solver.dt "
-                                 "= {}",
-                                 config.source, scene.trajectory_interval, dt));
+    throw InputError(
+        fmt::format("{}: scene.trajectory_interval = {} is shorter than solver.dt "
+                    "= {}",
+                    config.source, scene.trajectory_interval, dt));
   }
   TimeStepper stepper(make_friction_law(config.friction, config.fluid.eta_f),
                       make_solver_settings(config.solver), dt);
@@ -100,9 +101,8 @@ SceneOutcome run_scene(const Config& config, const RunOptions& options) {
     // Frames fall on the first step at or past each multiple of the interval.
     if (world.time >= next_frame - 1e-9 * dt) {
       trajectory.write_frame(world);
-      next_frame += scene.trajectory_interval * std::floor((world.time - next_frame) /
-                                                                scene.trajectory_interval + 1.0 +
-                                                            1e-9);
+      next_frame += scene.trajectory_interval *
+                    std::floor((world.time - next_frame) / scene.trajectory_interval + 1.0 + 1e-9);
     }
   }
   trajectory.commit();

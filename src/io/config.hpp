@@ -21,6 +21,8 @@
 //     shear_stress = 1.0         tau, force per area on the top wall       > 0
 //     wall_mass = 0.0            mass of the top wall; 0 => sum of the
 //                                masses of its glued spheres               >= 0
+//     wall_friction = 1.0        Coulomb friction of particle-wall contacts (the walls
+//                                are rough glued grains; see docs/shear-cell.md)  >= 0
 //   [scene]                      anything else (validation, teaching)
 //     particles = "p.csv"        required; CSV id,x,y,z,r[,vx,vy,vz,wx,wy,wz,fixed]
 //                                (see io/particles_csv.hpp); a relative path is
@@ -59,6 +61,9 @@
 //     transient_strain = 2.0     shear cell: strain excluded from averages [0, strain)
 //     output_interval = 0.05     between time-series rows: in strain (cell)
 //                                or in time (scene)                        > 0
+//     checkpoint_interval = 1.0  shear cell: strain between checkpoints     > 0
+//     snapshot_interval = 1.0    shear cell: strain between ParaView snapshots
+//                                (0 = none)                                >= 0
 //
 // Numbers must be finite; integers are accepted where a float is expected;
 // unknown keys and out-of-range values are errors (InputError).
@@ -100,6 +105,7 @@ struct CellConfig {
   std::int64_t seed = 1;
   double shear_stress = 1.0;
   double wall_mass = 0.0;
+  double wall_friction = 1.0;
 };
 
 struct FrictionConfig {
@@ -125,6 +131,8 @@ struct RunConfig {
   double time = 0.0;
   double transient_strain = 2.0;
   double output_interval = 0.05;
+  double checkpoint_interval = 1.0;
+  double snapshot_interval = 1.0;
 };
 
 struct Config {

@@ -42,6 +42,8 @@ CellConfig read_cell(const Section& s) {
   check(s, "shear_stress", c.shear_stress, c.shear_stress > 0.0, "must be > 0");
   c.wall_mass = s.number("wall_mass", c.wall_mass);
   check(s, "wall_mass", c.wall_mass, c.wall_mass >= 0.0, "must be >= 0 (0 = automatic)");
+  c.wall_friction = s.number("wall_friction", c.wall_friction);
+  check(s, "wall_friction", c.wall_friction, c.wall_friction >= 0.0, "must be >= 0");
   return c;
 }
 
@@ -135,6 +137,12 @@ RunConfig read_run(const Section& s, bool cell_mode) {
   }
   r.output_interval = s.number("output_interval", r.output_interval);
   check(s, "output_interval", r.output_interval, r.output_interval > 0.0, "must be > 0");
+  r.checkpoint_interval = s.number("checkpoint_interval", r.checkpoint_interval);
+  check(s, "checkpoint_interval", r.checkpoint_interval, r.checkpoint_interval > 0.0,
+        "must be > 0");
+  r.snapshot_interval = s.number("snapshot_interval", r.snapshot_interval);
+  check(s, "snapshot_interval", r.snapshot_interval, r.snapshot_interval >= 0.0,
+        "must be >= 0 (0 = no ParaView snapshots)");
   return r;
 }
 

@@ -42,7 +42,8 @@ toml::table to_toml(const Config& c) {
                                  {"radius_max", cell.radius_max},
                                  {"seed", cell.seed},
                                  {"shear_stress", cell.shear_stress},
-                                 {"wall_mass", cell.wall_mass}});
+                                 {"wall_mass", cell.wall_mass},
+                                 {"wall_friction", cell.wall_friction}});
   }
   if (c.scene) {
     const auto& scene = *c.scene;
@@ -69,7 +70,9 @@ toml::table to_toml(const Config& c) {
   t.insert("run", toml::table{{"strain", c.run.strain},
                               {"time", c.run.time},
                               {"transient_strain", c.run.transient_strain},
-                              {"output_interval", c.run.output_interval}});
+                              {"output_interval", c.run.output_interval},
+                              {"checkpoint_interval", c.run.checkpoint_interval},
+                              {"snapshot_interval", c.run.snapshot_interval}});
   return t;
 }
 

@@ -10,8 +10,8 @@
 namespace dilatant {
 
 struct Contact {
-  std::int32_t i = 0;      // sphere index
-  std::int32_t other = 0;  // sphere index j >= 0, or -(k+1) for plane k
+  std::int32_t i = 0;           // sphere index
+  std::int32_t other = 0;       // sphere index j >= 0, or -(k+1) for plane k
   Vec3 normal = Vec3::UnitZ();  // unit normal from the partner towards i
   double gap = 0.0;             // surface separation at the start of the step (< 0: overlap)
   double arm_i = 0.0;           // r_i: contact point is x_i - r_i n

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 
 namespace dilatant {
 
@@ -29,7 +30,7 @@ inline void apply_impulse(const Contact& c, const Vec3& dp, Bodies& b) {
 }
 
 template <class Law>
-SweepChange sweep(std::vector<Contact>& contacts, Bodies& b, const Law& law, double dt) {
+SweepChange sweep(std::span<Contact> contacts, Bodies& b, const Law& law, double dt) {
   SweepChange change;
   const double inv_dt = 1.0 / dt;
   for (Contact& c : contacts) {
@@ -64,20 +65,10 @@ void apply_impulses(const std::vector<Contact>& contacts, Bodies& bodies) {
   for (const Contact& c : contacts) apply_impulse(c, c.p_n * c.normal + c.p_t, bodies);
 }
 
-SweepChange gauss_seidel_sweep(std::vector<Contact>& contacts, Bodies& bodies,
-                               const FrictionLaw& law, double dt) {
-  return std::visit([&](const auto& l) { return sweep(contacts, bodies, l, dt); }, law);
-}
+namespace {
 
-SolveReport solve_contacts(std::vector<Contact>& contacts, Bodies& bodies, const FrictionLaw& law,
-                           double dt, const SolverSettings& settings) {
-  SolveReport report;
-  report.converged = false;
-  if (contacts.empty()) {
-    report.converged = true;
-    return report;
-  }
-  // Round-off floor of a sweep's impulse changes (see the header).
+// Round-off floor of a sweep's impulse changes (see the header).
+double round_off_floor_squared(const std::vector<Contact>& contacts, const Bodies& bodies) {
   double noise_squared = 0.0;
   for (const Contact& c : contacts) {
     double speed = bodies.velocity[c.i].norm() + c.arm_i * bodies.angular_velocity[c.i].norm();
@@ -87,22 +78,61 @@ SolveReport solve_contacts(std::vector<Contact>& contacts, Bodies& bodies, const
     const double noise = 16.0 * std::numeric_limits<double>::epsilon() * speed / c.w_n;
     noise_squared += noise * noise;
   }
-  std::visit(
-      [&](const auto& l) {
-        while (report.iterations < settings.max_iterations) {
-          const SweepChange ch = sweep(contacts, bodies, l, dt);
-          ++report.iterations;
-          const double change_squared = std::max(0.0, ch.change_squared - noise_squared);
-          report.residual = ch.impulse_squared > 0.0
-                                ? std::sqrt(change_squared / ch.impulse_squared)
-                                : (change_squared > 0.0 ? 1.0 : 0.0);
-          if (report.residual <= settings.tolerance) {
-            report.converged = true;
-            break;
-          }
-        }
-      },
-      law);
+  return noise_squared;
+}
+
+SweepChange sweep_range(std::vector<Contact>& contacts, std::size_t begin, std::size_t end,
+                        Bodies& bodies, const FrictionLaw& law, double dt) {
+  std::span<Contact> part(contacts.data() + begin, end - begin);
+  return std::visit([&](const auto& l) { return sweep(part, bodies, l, dt); }, law);
+}
+
+}  // namespace
+
+SweepChange gauss_seidel_sweep(std::vector<Contact>& contacts, Bodies& bodies,
+                               const FrictionLaw& law, double dt) {
+  return sweep_range(contacts, 0, contacts.size(), bodies, law, dt);
+}
+
+void WallBlock::update(const std::vector<Contact>& contacts, Bodies& bodies) const {
+  double impulse_x = 0.0;
+  for (const auto& [index, sign] : wall_contacts) {
+    const Contact& c = contacts[index];
+    impulse_x += sign * (c.p_n * c.normal[0] + c.p_t[0]);
+  }
+  wall->velocity = free_velocity + impulse_x / wall->mass;
+  for (std::int32_t s : wall->spheres) bodies.velocity[s] = Vec3(wall->velocity, 0.0, 0.0);
+}
+
+SolveReport solve_contacts(std::vector<Contact>& contacts, Bodies& bodies, const FrictionLaw& law,
+                           double dt, const SolverSettings& settings) {
+  return solve_contacts(contacts, contacts.size(), bodies, law, law, dt, settings, nullptr);
+}
+
+SolveReport solve_contacts(std::vector<Contact>& contacts, std::size_t wall_begin, Bodies& bodies,
+                           const FrictionLaw& law, const FrictionLaw& wall_law, double dt,
+                           const SolverSettings& settings, const WallBlock* wall) {
+  SolveReport report;
+  if (wall != nullptr) wall->update(contacts, bodies);
+  if (contacts.empty()) return report;
+  report.converged = false;
+  const double noise_squared = round_off_floor_squared(contacts, bodies);
+  while (report.iterations < settings.max_iterations) {
+    SweepChange ch = sweep_range(contacts, 0, wall_begin, bodies, law, dt);
+    const SweepChange ch_wall =
+        sweep_range(contacts, wall_begin, contacts.size(), bodies, wall_law, dt);
+    ch.change_squared += ch_wall.change_squared;
+    ch.impulse_squared += ch_wall.impulse_squared;
+    if (wall != nullptr) wall->update(contacts, bodies);
+    ++report.iterations;
+    const double change_squared = std::max(0.0, ch.change_squared - noise_squared);
+    report.residual = ch.impulse_squared > 0.0 ? std::sqrt(change_squared / ch.impulse_squared)
+                                               : (change_squared > 0.0 ? 1.0 : 0.0);
+    if (report.residual <= settings.tolerance) {
+      report.converged = true;
+      break;
+    }
+  }
   return report;
 }
 

@@ -44,16 +44,25 @@
 // never meets the relative test and runs all max_iterations sweeps
 // (tests/validation/head_on_collision_test.cpp).
 // Warm start: impulses of the previous step are applied before the first sweep.
+//
+// The moving wall (shear cell) is one more block of the Gauss–Seidel iteration:
+// its spheres have infinite mass in the contact problems, and after each sweep
+// its velocity is solved exactly given the contact impulses,
+//     V = V_free + (1/M) sum_c (impulse of contact c on the wall)_x ,
+// then copied to its spheres. Contact sweeps never wait on the wall.
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "friction/friction_law.hpp"
 #include "solver/contact.hpp"
 #include "world/bodies.hpp"
+#include "world/sliding_wall.hpp"
 
 namespace dilatant {
 
 struct SolverSettings {
-  double tolerance = 1e-6;   // on the relative impulse change of one sweep
+  double tolerance = 1e-6;  // on the relative impulse change of one sweep
   int max_iterations = 1000;
 };
 
@@ -76,7 +85,22 @@ void apply_impulses(const std::vector<Contact>& contacts, Bodies& bodies);
 SweepChange gauss_seidel_sweep(std::vector<Contact>& contacts, Bodies& bodies,
                                const FrictionLaw& law, double dt);
 
+// The moving wall's block: which contacts touch it, with the sign of their
+// impulse on it (+1 if the wall sphere is body i, -1 if it is the partner).
+struct WallBlock {
+  SlidingWall* wall = nullptr;
+  double free_velocity = 0.0;  // V + dt F / M
+  std::vector<std::pair<std::int32_t, double>> wall_contacts;
+
+  void update(const std::vector<Contact>& contacts, Bodies& bodies) const;
+};
+
 SolveReport solve_contacts(std::vector<Contact>& contacts, Bodies& bodies, const FrictionLaw& law,
                            double dt, const SolverSettings& settings);
+
+// Contacts [wall_begin, end) touch a wall sphere and obey wall_law; `wall` may be null.
+SolveReport solve_contacts(std::vector<Contact>& contacts, std::size_t wall_begin, Bodies& bodies,
+                           const FrictionLaw& law, const FrictionLaw& wall_law, double dt,
+                           const SolverSettings& settings, const WallBlock* wall);
 
 }  // namespace dilatant

@@ -30,6 +30,33 @@ void TimeStepper::warm_start(Bodies& bodies) {
   apply_impulses(contacts_, bodies);
 }
 
+void TimeStepper::order_wall_contacts_last(const World& world) {
+  wall_begin_ = contacts_.size();
+  if (world.group.empty()) return;
+  auto touches_wall = [&](const Contact& c) {
+    return world.is_wall(static_cast<std::size_t>(c.i)) ||
+           (!c.with_plane() && world.is_wall(static_cast<std::size_t>(c.other)));
+  };
+  const auto it = std::stable_partition(contacts_.begin(), contacts_.end(),
+                                        [&](const Contact& c) { return !touches_wall(c); });
+  wall_begin_ = static_cast<std::size_t>(it - contacts_.begin());
+}
+
+WallBlock TimeStepper::make_wall_block(World& world, double free_velocity) const {
+  WallBlock block;
+  block.wall = &*world.sliding_wall;
+  block.free_velocity = free_velocity;
+  for (std::size_t k = wall_begin_; k < contacts_.size(); ++k) {
+    const Contact& c = contacts_[k];
+    const auto index = static_cast<std::int32_t>(k);
+    if (world.group[c.i] == BodyGroup::TopWall) block.wall_contacts.emplace_back(index, 1.0);
+    if (!c.with_plane() && world.group[c.other] == BodyGroup::TopWall) {
+      block.wall_contacts.emplace_back(index, -1.0);
+    }
+  }
+  return block;
+}
+
 double TimeStepper::largest_overlap(const World& world) const {
   double overlap = 0.0;
   const Bodies& b = world.bodies;
@@ -38,8 +65,8 @@ double TimeStepper::largest_overlap(const World& world) const {
     if (c.with_plane()) {
       gap = world.planes[c.plane_index()].distance(b.position[c.i]) - b.radius[c.i];
     } else {
-      gap = world.box.minimum_image(b.position[c.i], b.position[c.other]).norm() -
-            b.radius[c.i] - b.radius[c.other];
+      gap = world.box.minimum_image(b.position[c.i], b.position[c.other]).norm() - b.radius[c.i] -
+            b.radius[c.other];
     }
     overlap = std::max(overlap, -gap);
   }
@@ -57,12 +84,26 @@ StepReport TimeStepper::step(World& world) {
     if (!world.external_force.empty()) a += b.inv_mass[i] * world.external_force[i];
     b.velocity[i] += dt_ * a;
   }
+  double wall_free_velocity = 0.0;
+  if (world.sliding_wall) {
+    SlidingWall& wall = *world.sliding_wall;
+    wall_free_velocity = wall.velocity + dt_ * wall.drive_force / wall.mass;
+    for (std::int32_t s : wall.spheres) b.velocity[s] = Vec3(wall_free_velocity, 0.0, 0.0);
+  }
   report.kinetic_energy_free = b.kinetic_energy();
 
   // 2. detect, 3. warm start, 4. solve
   detector_.detect(world, detection_margin(world), contacts_);
+  order_wall_contacts_last(world);
   warm_start(b);
-  report.solve = solve_contacts(contacts_, b, law_, dt_, settings_);
+  if (world.sliding_wall) {
+    const WallBlock block = make_wall_block(world, wall_free_velocity);
+    report.solve = solve_contacts(contacts_, wall_begin_, b, law_, wall_law_.value_or(law_), dt_,
+                                  settings_, &block);
+  } else {
+    report.solve = solve_contacts(contacts_, wall_begin_, b, law_, wall_law_.value_or(law_), dt_,
+                                  settings_, nullptr);
+  }
 
   // 5. store impulses of the contacts that carry load
   last_impulse_.clear();

@@ -1,7 +1,8 @@
 #pragma once
 // One Contact Dynamics time step (Moreau–Jean, theta = 1), in explicit stages:
 //
-//   1. predict    v_free = v + dt (g + F_ext/m)          (no contacts)
+//   1. predict    v_free = v + dt (g + F_ext/m)          (no contacts),
+//                 and the sliding wall's V_free = V + dt F/M
 //   2. detect     contacts whose gap may close within the step (cell list)
 //   3. warm start impulses of contacts that existed last step
 //   4. solve      nonlinear Gauss–Seidel until the impulses converge
@@ -10,6 +11,7 @@
 //
 // Collisions are perfectly inelastic in the normal direction (zero restitution).
 #include <cstdint>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -36,17 +38,34 @@ class TimeStepper {
 
   StepReport step(World& world);
 
+  // Contacts touching a wall sphere (World::group) obey this law instead.
+  void set_wall_law(FrictionLaw law) { wall_law_ = std::move(law); }
+  void set_dt(double dt) { dt_ = dt; }
   double dt() const { return dt_; }
   const FrictionLaw& law() const { return law_; }
   // Contacts of the last step with their impulses and friction regimes.
   const std::vector<Contact>& contacts() const { return contacts_; }
+  // Contacts [wall_begin(), end) of contacts() touch a wall sphere.
+  std::size_t wall_begin() const { return wall_begin_; }
+
+  // Warm-start memory (world-frame impulse by contact key), for checkpoints.
+  const std::unordered_map<std::uint64_t, Vec3>& warm_start_impulses() const {
+    return last_impulse_;
+  }
+  void restore_warm_start(std::unordered_map<std::uint64_t, Vec3> impulses) {
+    last_impulse_ = std::move(impulses);
+  }
 
  private:
   double detection_margin(const World& world) const;
   void warm_start(Bodies& bodies);
+  void order_wall_contacts_last(const World& world);
+  WallBlock make_wall_block(World& world, double free_velocity) const;
   double largest_overlap(const World& world) const;
 
   FrictionLaw law_;
+  std::optional<FrictionLaw> wall_law_;
+  std::size_t wall_begin_ = 0;
   SolverSettings settings_;
   double dt_;
   ContactDetector detector_;

@@ -117,7 +117,7 @@ void expect_first_order_positions(double theta, bool rolls) {
   double previous_error = 0.0;
   for (double dt : {2e-3, 1e-3, 5e-4}) {
     const int steps = static_cast<int>(std::lround(T / dt));
-    const Sample& s = release_on_incline(theta, dt, steps).back();
+    const Sample s = release_on_incline(theta, dt, steps).back();
     const double error = s.x - 0.5 * a * s.t * s.t;
     // x_n - a t^2/2 = a t dt/2 exactly; round-off of the sum of n terms.
     EXPECT_NEAR(error, 0.5 * a * s.t * dt, accumulated_roundoff(steps, s.x));

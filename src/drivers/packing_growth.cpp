@@ -1,0 +1,60 @@
+#include "drivers/packing_growth.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "friction/coulomb_law.hpp"
+#include "solver/time_stepper.hpp"
+
+namespace dilatant {
+
+namespace {
+
+// Inflation per step: 0.3% of the radius keeps the new overlaps small enough
+// that one linearised projection removes them.
+constexpr double kInflationFactor = 1.003;
+// The final packing may keep overlaps below this fraction of the smallest radius.
+constexpr double kFinalOverlap = 1e-6;
+constexpr int kMaxFinalRelaxations = 400;
+
+double project_out_overlaps(World& world, TimeStepper& projector) {
+  Bodies& b = world.bodies;
+  std::fill(b.velocity.begin(), b.velocity.end(), Vec3::Zero());
+  std::fill(b.angular_velocity.begin(), b.angular_velocity.end(), Vec3::Zero());
+  const StepReport r = projector.step(world);
+  std::fill(b.velocity.begin(), b.velocity.end(), Vec3::Zero());
+  std::fill(b.angular_velocity.begin(), b.angular_velocity.end(), Vec3::Zero());
+  return r.max_overlap;
+}
+
+}  // namespace
+
+GrowthReport grow_to_full_size(World& world, std::size_t first, double initial_scale) {
+  Bodies& b = world.bodies;
+  const std::vector<double> final_radius(b.radius.begin(), b.radius.end());
+  const double r_min =
+      *std::min_element(final_radius.begin() + static_cast<long>(first), final_radius.end());
+  const Vec3 gravity = world.gravity;
+  world.gravity = Vec3::Zero();
+  const double time = world.time;
+  TimeStepper projector(CoulombLaw{0.0, 0.0}, SolverSettings{1e-4, 500}, 1.0);
+
+  GrowthReport report;
+  for (double scale = initial_scale; scale < 1.0;) {
+    scale = std::min(1.0, scale * kInflationFactor);
+    for (std::size_t i = first; i < b.size(); ++i) b.radius[i] = scale * final_radius[i];
+    report.max_overlap = project_out_overlaps(world, projector);
+    ++report.inflation_steps;
+  }
+  while (report.max_overlap > kFinalOverlap * r_min &&
+         report.relaxation_steps < kMaxFinalRelaxations) {
+    report.max_overlap = project_out_overlaps(world, projector);
+    ++report.relaxation_steps;
+  }
+  world.gravity = gravity;
+  world.time = time;
+  return report;
+}
+
+}  // namespace dilatant

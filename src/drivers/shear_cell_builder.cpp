@@ -1,0 +1,89 @@
+#include "drivers/shear_cell_builder.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "drivers/packing_growth.hpp"
+#include "drivers/rough_wall.hpp"
+
+namespace dilatant {
+
+namespace {
+
+double sphere_volume(double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r; }
+
+void add_wall(World& world, const std::vector<WallSphere>& spheres, BodyGroup group,
+              double density) {
+  for (const WallSphere& s : spheres) {
+    world.bodies.add_sphere(static_cast<std::int64_t>(world.bodies.size()), s.position, s.radius,
+                            density, /*fixed=*/true);
+    world.group.push_back(group);
+  }
+}
+
+}  // namespace
+
+World build_shear_cell(const Config& config, ShearCellGeometry& geometry) {
+  const CellConfig& cell = *config.cell;
+  const double lx = cell.size[0], ly = cell.size[1], lz = cell.size[2];
+  std::mt19937_64 rng(static_cast<std::uint64_t>(cell.seed));
+
+  World world;
+  world.box.length = Vec3(lx, ly, lz);
+  world.box.periodic = {true, true, false};
+  world.planes.push_back(Plane{Vec3::Zero(), Vec3::UnitZ()});
+  world.planes.push_back(Plane{Vec3(0.0, 0.0, lz), -Vec3::UnitZ()});
+
+  const auto bottom = random_monolayer(lx, ly, 0.0, cell.radius_min, cell.radius_max, rng);
+  const auto top = random_monolayer(lx, ly, lz, cell.radius_min, cell.radius_max, rng);
+  add_wall(world, bottom, BodyGroup::BottomWall, config.density);
+  add_wall(world, top, BodyGroup::TopWall, config.density);
+  double wall_radius_sum = 0.0;
+  for (const auto& s : bottom) wall_radius_sum += s.radius;
+  for (const auto& s : top) wall_radius_sum += s.radius;
+  geometry.wall_radius_mean = wall_radius_sum / double(bottom.size() + top.size());
+  geometry.gap_height = lz - 2.0 * geometry.wall_radius_mean;
+
+  // Mobile spheres: radii drawn until the next one would overshoot phi.
+  const double target_volume = cell.phi * lx * ly * geometry.gap_height;
+  std::uniform_real_distribution<double> ur(cell.radius_min, cell.radius_max);
+  std::vector<double> radii;
+  double volume = 0.0;
+  for (;;) {
+    const double r = ur(rng);
+    if (volume + sphere_volume(r) > target_volume) break;
+    radii.push_back(r);
+    volume += sphere_volume(r);
+  }
+  geometry.first_mobile = world.bodies.size();
+  geometry.mobile_count = radii.size();
+  geometry.phi = volume / (lx * ly * geometry.gap_height);
+  std::uniform_real_distribution<double> ux(0.0, lx), uy(0.0, ly),
+      uz(cell.radius_max, lz - cell.radius_max);
+  for (double r : radii) {
+    world.bodies.add_sphere(static_cast<std::int64_t>(world.bodies.size()),
+                            Vec3(ux(rng), uy(rng), uz(rng)), r, config.density, false);
+    world.group.push_back(BodyGroup::Particle);
+  }
+
+  // Start the growth where random positions overlap little (phi ~ 0.2).
+  const double initial_scale = std::min(1.0, std::cbrt(0.2 / cell.phi));
+  const GrowthReport growth = grow_to_full_size(world, geometry.first_mobile, initial_scale);
+  geometry.growth_steps = growth.inflation_steps + growth.relaxation_steps;
+  geometry.max_overlap = growth.max_overlap;
+
+  SlidingWall wall;
+  double wall_mass = 0.0;
+  for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+    if (world.group[i] != BodyGroup::TopWall) continue;
+    wall.spheres.push_back(static_cast<std::int32_t>(i));
+    wall_mass += config.density * sphere_volume(world.bodies.radius[i]);
+  }
+  wall.mass = cell.wall_mass > 0.0 ? cell.wall_mass : wall_mass;
+  wall.drive_force = cell.shear_stress * lx * ly;
+  world.sliding_wall = wall;
+  return world;
+}
+
+}  // namespace dilatant

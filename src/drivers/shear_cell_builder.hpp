@@ -1,0 +1,35 @@
+#pragma once
+// The paper's shear cell (SPEC §1): mobile spheres between a fixed rough bottom
+// wall and a rough top wall that slides along x under a constant force, periodic
+// in x and y, at constant volume.
+//
+//     z = Lz  ooooooooooooooooo  top wall: glued spheres, one rigid body, moves in x
+//              .  o  . o  .  o
+//              o  .  o  .  o       mobile spheres, phi between the walls' surfaces
+//              .  o  .  o  .
+//     z = 0   ooooooooooooooooo  bottom wall: glued spheres, fixed
+//
+// Safety planes at z = 0 and z = Lz (facing inwards) keep a sphere from
+// slipping through a hole between glued wall spheres.
+#include <cstddef>
+
+#include "io/config.hpp"
+#include "world/world.hpp"
+
+namespace dilatant {
+
+struct ShearCellGeometry {
+  std::size_t mobile_count = 0;
+  std::size_t first_mobile = 0;  // bodies [first_mobile, end) are mobile
+  double wall_radius_mean = 0.0;
+  double phi = 0.0;         // V_mobile / (Lx Ly (Lz - 2 r_w)), as realised
+  double gap_height = 0.0;  // Lz - 2 r_w, between the walls' mean surfaces
+  int growth_steps = 0;
+  double max_overlap = 0.0;
+};
+
+// Builds the walls and a packing of mobile spheres at config.cell->phi,
+// reproducibly from cell.seed. eta_f etc. are not part of the world.
+World build_shear_cell(const Config& config, ShearCellGeometry& geometry);
+
+}  // namespace dilatant

@@ -1,0 +1,217 @@
+#include "drivers/shear_cell_run.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+
+#include "drivers/model_setup.hpp"
+#include "drivers/shear_cell_summary.hpp"
+#include "io/atomic_file.hpp"
+#include "io/contacts_csv.hpp"
+#include "io/vtk_writer.hpp"
+#include "measure/wall_forces.hpp"
+#include "solver/time_stepper.hpp"
+
+namespace dilatant {
+
+namespace {
+
+// Automatic time step (solver.dt = 0): no body may move more than
+// kDisplacement * r_min in one step, neither at its current speed nor, from
+// rest, under the wall's drive: dt = min(c r/v_max, sqrt(2 c r / a_wall)).
+constexpr double kDisplacement = 0.02;
+// Jammed: the wall advanced less than kJamStrain of strain within kJamWindow
+// time units (code units R sqrt(rho/tau)); a Newtonian flow at lambda = 0.01
+// still shears ~1e-2 in that time.
+constexpr double kJamWindow = 50.0;
+constexpr double kJamStrain = 1e-4;
+
+double choose_dt(const Config& config, const World& world) {
+  if (config.solver.dt > 0.0) return config.solver.dt;
+  const Bodies& b = world.bodies;
+  double v_max = 0.0, r_min = b.radius[0];
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    v_max = std::max(v_max, b.velocity[i].norm() + b.radius[i] * b.angular_velocity[i].norm());
+    r_min = std::min(r_min, b.radius[i]);
+  }
+  const SlidingWall& wall = *world.sliding_wall;
+  const double dt_drive = std::sqrt(2.0 * kDisplacement * r_min * wall.mass / wall.drive_force);
+  return v_max > 0.0 ? std::min(dt_drive, kDisplacement * r_min / v_max) : dt_drive;
+}
+
+ShearCellState initial_state(const Config& config) {
+  ShearCellState s;
+  s.world = build_shear_cell(config, s.geometry);
+  const double lz = config.cell->size[2];
+  s.profile = VelocityProfile(lz, static_cast<int>(std::ceil(lz)));
+  s.next_row_strain = config.run.output_interval;
+  s.next_checkpoint_strain = config.run.checkpoint_interval;
+  s.next_snapshot_strain = 0.0;
+  return s;
+}
+
+std::vector<std::uint8_t> group_codes(const World& world) {
+  std::vector<std::uint8_t> g;
+  for (BodyGroup x : world.group) g.push_back(static_cast<std::uint8_t>(x));
+  return g;
+}
+
+void write_snapshot(const std::filesystem::path& out, ShearCellState& s,
+                    const std::vector<Contact>& contacts) {
+  const auto k = s.snapshot_strains.size();
+  std::filesystem::create_directories(out / "snapshots");
+  const auto particles = fmt::format("snapshots/particles_{:04d}.vtp", k);
+  const auto network = fmt::format("snapshots/contacts_{:04d}.vtp", k);
+  write_particles_vtp(out / particles, s.world, group_codes(s.world));
+  write_contacts_vtp(out / network, s.world, contacts, s.dt);
+  s.snapshot_strains.push_back(s.strain);
+  // The collection's "timestep" is the strain at the snapshot.
+  PvdCollection pvd(out / "cell.pvd");
+  for (std::size_t n = 0; n < s.snapshot_strains.size(); ++n) {
+    pvd.add(s.snapshot_strains[n], fmt::format("snapshots/particles_{:04d}.vtp", n), 0);
+    pvd.add(s.snapshot_strains[n], fmt::format("snapshots/contacts_{:04d}.vtp", n), 1);
+  }
+  pvd.write();
+}
+
+void write_series(const std::filesystem::path& out, const ShearCellState& s, double lz) {
+  std::string csv = flow_csv_header();
+  for (const FlowRow& r : s.rows) csv += flow_csv_row(r, lz);
+  write_file_atomically(out / "timeseries.csv", csv);
+}
+
+void accumulate_step(const Config& config, ShearCellState& s, const StepReport& report,
+                     const std::vector<Contact>& contacts) {
+  const CellConfig& cell = *config.cell;
+  const double dt = s.dt, area = cell.size[0] * cell.size[1];
+  const bool steady = s.strain > config.run.transient_strain;
+  const ContactCounts n =
+      count_contacts(s.world, contacts, dt, config.friction.s_lim, steady ? &s.histogram : nullptr);
+  const WallForces f = wall_forces(s.world, contacts, dt);
+  IntervalSums& a = s.interval;
+  a.time += dt;
+  a.velocity += s.world.sliding_wall->velocity * dt;
+  a.kinetic_energy += report.kinetic_energy * dt;
+  a.contacts += double(report.contacts_closed) * dt;
+  a.closed += n.closed;
+  a.boundary += n.boundary;
+  a.over_s_lim += n.over_s_lim;
+  a.normal_stress += 0.5 * (f.top[2] - f.bottom[2]) / area * dt;
+  a.bottom_force_x += f.bottom[0] * dt;
+  a.top_force_z += f.top[2] * dt;
+  a.bottom_force_z += f.bottom[2] * dt;
+  a.power_bl += n.sliding_power_bl * dt;
+  a.power_hd += n.sliding_power_hd * dt;
+  a.iterations += report.solve.iterations;
+  a.max_residual = std::max(a.max_residual, report.solve.residual);
+  a.steps += 1.0;
+  a.unconverged += report.solve.converged ? 0.0 : 1.0;
+  if (steady) s.profile.add(s.world, dt);
+}
+
+void show_progress(const Config& config, const ShearCellState& s, double elapsed) {
+  const double lz = config.cell->size[2];
+  const CellUnits u = cell_units(config);
+  const double gdot = s.rows.empty() ? 0.0 : s.rows.back().wall_velocity / lz;
+  const double done = s.strain / config.run.strain;
+  const double left = done > 0.0 ? elapsed * (1.0 - done) / done : 0.0;
+  std::cerr << fmt::format(
+                   "\rstrain {:6.2f}/{:.1f}  gamma_dot {:9.3g}  eta {:9.3g}  left {:4.0f} s ",
+                   s.strain, config.run.strain, gdot / u.rate_unit,
+                   gdot > 0.0 ? 1.0 / gdot / u.eta_f : 0.0, left)
+            << std::flush;
+}
+
+}  // namespace
+
+CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto& out = options.run.out_dir;
+  const CellConfig& cell = *config.cell;
+  const double lz = cell.size[2];
+  const auto checkpoint = out / "checkpoint.bin";
+  std::filesystem::create_directories(out);
+
+  ShearCellState s = options.resume && std::filesystem::exists(checkpoint)
+                         ? load_checkpoint(checkpoint)
+                         : initial_state(config);
+  write_file_atomically(out / "config.toml", resolved_toml(config));
+  const CellUnits units = cell_units(config);
+  TimeStepper stepper(make_friction_law(config.friction, units.eta_f),
+                      make_solver_settings(config.solver), s.dt > 0.0 ? s.dt : 1.0);
+  stepper.set_wall_law(CoulombLaw{cell.wall_friction, units.eta_f});
+  stepper.restore_warm_start(s.warm_start);
+
+  const bool progress = !options.run.quiet && isatty(STDERR_FILENO);
+  auto last_progress = std::chrono::steady_clock::now();
+  CellOutcome outcome;
+  while (s.strain < config.run.strain && !s.jammed) {
+    s.dt = choose_dt(config, s.world);
+    stepper.set_dt(s.dt);
+    const StepReport report = stepper.step(s.world);
+    ++s.steps;
+    s.strain += s.world.sliding_wall->velocity * s.dt / lz;
+    accumulate_step(config, s, report, stepper.contacts());
+
+    if (s.strain >= s.next_row_strain) {
+      s.rows.push_back(s.interval.close(s.world.time, s.strain));
+      s.interval = IntervalSums{};
+      s.next_row_strain += config.run.output_interval;
+    }
+    if (config.run.snapshot_interval > 0.0 && s.strain >= s.next_snapshot_strain) {
+      write_snapshot(out, s, stepper.contacts());
+      s.next_snapshot_strain += config.run.snapshot_interval;
+    }
+    if (s.world.time - s.jam_window_time >= kJamWindow) {
+      s.jammed = s.strain - s.jam_window_strain < kJamStrain;
+      s.jam_window_time = s.world.time;
+      s.jam_window_strain = s.strain;
+    }
+    const bool stop = options.stop_requested != nullptr && options.stop_requested->load();
+    if (s.strain >= s.next_checkpoint_strain || stop) {
+      s.warm_start = stepper.warm_start_impulses();
+      save_checkpoint(checkpoint, s);
+      write_series(out, s, lz);
+      while (s.next_checkpoint_strain <= s.strain)
+        s.next_checkpoint_strain += config.run.checkpoint_interval;
+    }
+    if (stop) {
+      if (progress) std::cerr << "\n";
+      outcome.interrupted = true;
+      return outcome;
+    }
+    if (progress &&
+        std::chrono::steady_clock::now() - last_progress > std::chrono::milliseconds(500)) {
+      show_progress(
+          config, s,
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      last_progress = std::chrono::steady_clock::now();
+    }
+  }
+  if (progress) std::cerr << "\n";
+  if (s.interval.steps > 0) {
+    s.rows.push_back(s.interval.close(s.world.time, s.strain));
+    s.interval = IntervalSums{};
+  }
+  s.warm_start = stepper.warm_start_impulses();
+  save_checkpoint(checkpoint, s);
+  write_series(out, s, lz);
+  write_file_atomically(out / "velocity_profile.csv", s.profile.csv());
+  write_file_atomically(out / "sommerfeld_hist.csv", sommerfeld_histogram_csv(s.histogram));
+  write_file_atomically(out / "contacts.csv",
+                        contacts_csv(s.world.bodies, stepper.contacts(), s.dt));
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  write_file_atomically(out / "summary.json", cell_summary(config, s, wall).dump(2) + "\n");
+  outcome.steps = s.steps;
+  for (const FlowRow& r : s.rows)
+    outcome.unconverged_steps += static_cast<long>(r.unconverged_steps);
+  outcome.jammed = s.jammed;
+  return outcome;
+}
+
+}  // namespace dilatant

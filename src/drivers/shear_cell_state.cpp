@@ -1,0 +1,108 @@
+#include "drivers/shear_cell_state.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "io/atomic_file.hpp"
+#include "io/binary_archive.hpp"
+
+namespace dilatant {
+
+namespace {
+
+constexpr std::uint64_t kMagic = 0x31544e54414c4944ULL;  // "DILATNT1"
+
+// One function serves both directions so the field order cannot diverge.
+template <class Archive, class State>
+void visit_state(Archive& a, State& s) {
+  auto& b = s.world.bodies;
+  a.vector(b.position);
+  a.vector(b.velocity);
+  a.vector(b.angular_velocity);
+  a.vector(b.radius);
+  a.vector(b.inv_mass);
+  a.vector(b.inv_inertia);
+  a.vector(b.id);
+  a.vector(s.world.group);
+  std::uint64_t planes = s.world.planes.size();
+  a.value(planes);
+  s.world.planes.resize(planes);
+  for (auto& plane : s.world.planes) {
+    a.value(plane.point);
+    a.value(plane.normal);
+  }
+  a.value(s.world.box.length);
+  a.value(s.world.box.periodic);
+  a.value(s.world.gravity);
+  a.value(s.world.time);
+  auto& wall = *s.world.sliding_wall;
+  a.vector(wall.spheres);
+  a.value(wall.mass);
+  a.value(wall.drive_force);
+  a.value(wall.velocity);
+  a.value(s.geometry);
+  a.value(s.dt);
+  a.value(s.steps);
+  a.value(s.strain);
+  a.value(s.next_row_strain);
+  a.value(s.next_snapshot_strain);
+  a.value(s.next_checkpoint_strain);
+  a.vector(s.snapshot_strains);
+  a.value(s.interval);
+  a.vector(s.rows);
+  a.value(s.profile.height());
+  a.vector(s.profile.sums());
+  a.vector(s.profile.weights());
+  a.value(s.histogram);
+  a.value(s.jam_window_strain);
+  a.value(s.jam_window_time);
+  a.value(s.jammed);
+}
+
+}  // namespace
+
+void save_checkpoint(const std::filesystem::path& file, const ShearCellState& state) {
+  BinaryWriter w;
+  w.value(kMagic);
+  // visit_state needs mutable access for the reader; the writer only reads.
+  visit_state(w, const_cast<ShearCellState&>(state));
+  // Warm-start impulses, sorted by key so the file is reproducible.
+  std::vector<std::pair<std::uint64_t, Vec3>> impulses(state.warm_start.begin(),
+                                                       state.warm_start.end());
+  std::sort(impulses.begin(), impulses.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
+  w.value(static_cast<std::uint64_t>(impulses.size()));
+  for (const auto& [key, p] : impulses) {
+    w.value(key);
+    w.value(p);
+  }
+  write_file_atomically(file, w.bytes());
+}
+
+ShearCellState load_checkpoint(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw std::runtime_error(file.string() + ": cannot read checkpoint");
+  std::ostringstream content;
+  content << in.rdbuf();
+  BinaryReader r(content.str());
+  std::uint64_t magic = 0;
+  r.value(magic);
+  if (magic != kMagic) throw std::runtime_error(file.string() + ": not a dilatant checkpoint");
+  ShearCellState s;
+  s.world.sliding_wall.emplace();
+  visit_state(r, s);
+  std::uint64_t n = 0;
+  r.value(n);
+  for (std::uint64_t k = 0; k < n; ++k) {
+    std::uint64_t key = 0;
+    Vec3 p;
+    r.value(key);
+    r.value(p);
+    s.warm_start.emplace(key, p);
+  }
+  if (!r.at_end()) throw std::runtime_error(file.string() + ": checkpoint has trailing data");
+  return s;
+}
+
+}  // namespace dilatant

@@ -1,0 +1,44 @@
+#pragma once
+// Everything a shear-cell run carries from step to step. A checkpoint is this
+// state written byte for byte, so a resumed run continues exactly where the
+// interrupted one stopped (same floating-point results).
+#include <filesystem>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "drivers/shear_cell_builder.hpp"
+#include "measure/contact_statistics.hpp"
+#include "measure/flow_series.hpp"
+#include "measure/velocity_profile.hpp"
+#include "world/world.hpp"
+
+namespace dilatant {
+
+struct ShearCellState {
+  World world;
+  ShearCellGeometry geometry;
+  double dt = 0.0;
+  std::unordered_map<std::uint64_t, Vec3> warm_start;
+
+  long steps = 0;
+  double strain = 0.0;
+  double next_row_strain = 0.0;
+  double next_snapshot_strain = 0.0;
+  double next_checkpoint_strain = 0.0;
+  std::vector<double> snapshot_strains;  // strain of each ParaView snapshot written
+  IntervalSums interval;
+  std::vector<FlowRow> rows;
+  VelocityProfile profile;
+  SommerfeldHistogram histogram;
+  // Jam detection: strain and time at the start of the current window.
+  double jam_window_strain = 0.0;
+  double jam_window_time = 0.0;
+  bool jammed = false;
+};
+
+// Writes the state atomically; reads it back (throws on a corrupt file).
+void save_checkpoint(const std::filesystem::path& file, const ShearCellState& state);
+ShearCellState load_checkpoint(const std::filesystem::path& file);
+
+}  // namespace dilatant

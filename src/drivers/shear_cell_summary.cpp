@@ -1,0 +1,122 @@
+#include "drivers/shear_cell_summary.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "dilatant/version.hpp"
+
+namespace dilatant {
+
+CellUnits cell_units(const Config& config) {
+  const CellConfig& cell = *config.cell;
+  CellUnits u;
+  u.lambda = config.fluid.lambda;
+  u.eta_f = std::sqrt(cell.shear_stress * config.density) * cell.radius_max / u.lambda;
+  u.rate_unit = u.eta_f / (config.density * cell.radius_max * cell.radius_max);
+  u.stress_unit = u.eta_f * u.eta_f / (config.density * cell.radius_max * cell.radius_max);
+  return u;
+}
+
+nlohmann::json cell_summary(const Config& config, const ShearCellState& s, double wall_time) {
+  const CellConfig& cell = *config.cell;
+  const CellUnits u = cell_units(config);
+  const double lz = cell.size[2], area = cell.size[0] * cell.size[1];
+  const double from = config.run.transient_strain;
+  const auto v = steady_average(s.rows, from, [](const FlowRow& r) { return r.wall_velocity; });
+  const auto p = steady_average(s.rows, from, [](const FlowRow& r) { return r.normal_stress; });
+  const auto bl = steady_average(s.rows, from, [](const FlowRow& r) { return r.frac_bl; });
+  const auto over = steady_average(s.rows, from, [](const FlowRow& r) { return r.frac_over_slim; });
+  const auto fx = steady_average(s.rows, from, [](const FlowRow& r) { return r.bottom_force_x; });
+  const auto pbl = steady_average(s.rows, from, [](const FlowRow& r) { return r.power_bl; });
+  const auto phd = steady_average(s.rows, from, [](const FlowRow& r) { return r.power_hd; });
+  double unconverged = 0.0, iterations = 0.0, steps = 0.0;
+  for (const FlowRow& r : s.rows) {
+    unconverged += r.unconverged_steps;
+    iterations += r.mean_iterations * r.steps;
+    steps += r.steps;
+  }
+
+  const double gdot_code = v.mean / lz;
+  // Bulk shear rate: slope of the profile over the central half of the gap.
+  const LinearFit bulk = s.profile.fit(0.25 * lz, 0.75 * lz);
+  const LinearFit whole = s.profile.fit(2.0, lz - 2.0);
+  const double rel_err = gdot_code > 0.0 ? v.error / v.mean : 0.0;
+  const bool profile_consistent = gdot_code > 0.0 && std::abs(bulk.slope - gdot_code) <=
+                                                         std::max(0.1, 2.0 * rel_err) * gdot_code;
+
+  nlohmann::json j;
+  j["version"] = kVersion;
+  j["mode"] = "cell";
+  j["lambda"] = u.lambda;
+  j["eta_f"] = u.eta_f;
+  j["mu0"] = config.friction.mu0;
+  j["s_c"] = config.friction.s_c;
+  j["s_lim"] = config.friction.s_lim;
+  j["friction_law"] = config.friction.law == FrictionLawKind::Coulomb ? "coulomb" : "stribeck";
+  j["phi"] = s.geometry.phi;
+  j["phi_requested"] = cell.phi;
+  j["mobile_spheres"] = s.geometry.mobile_count;
+  j["wall_radius_mean"] = s.geometry.wall_radius_mean;
+  j["shear_stress"] = cell.shear_stress / u.stress_unit;
+  j["jammed"] = s.jammed;
+  if (s.jammed) {
+    j["gamma_dot"] = 0.0;
+    j["gamma_dot_err"] = 0.0;
+    j["eta"] = nullptr;
+    j["eta_err"] = nullptr;
+  } else {
+    j["gamma_dot"] = gdot_code / u.rate_unit;
+    j["gamma_dot_err"] = v.error / lz / u.rate_unit;
+    const double eta = gdot_code > 0.0 ? cell.shear_stress / gdot_code / u.eta_f : 0.0;
+    j["eta"] = eta;
+    j["eta_err"] = eta * rel_err;
+  }
+  j["gamma_dot_bulk"] = bulk.slope / u.rate_unit;
+  j["profile_consistent"] = profile_consistent;
+  j["profile_max_deviation"] = v.mean != 0.0 ? whole.max_deviation / std::abs(v.mean) : 0.0;
+  j["normal_stress"] = p.mean / u.stress_unit;
+  j["normal_stress_err"] = p.error / u.stress_unit;
+  j["inertial_number"] =
+      p.mean > 0.0 ? gdot_code * cell.radius_max * std::sqrt(config.density / p.mean) : 0.0;
+  j["viscous_number"] = p.mean > 0.0 ? u.eta_f * gdot_code / p.mean : 0.0;
+  j["frac_bl"] = bl.mean;
+  j["frac_hd"] = 1.0 - bl.mean;
+  j["frac_over_slim"] = over.mean;
+  j["valid"] = !s.jammed && over.mean <= 0.05 && profile_consistent;
+  j["bottom_wall_force_x"] = fx.mean;
+  j["bottom_wall_force_x_err"] = fx.error;
+  j["applied_force_x"] = cell.shear_stress * area;
+  j["power_injected"] = cell.shear_stress * area * v.mean;
+  j["power_sliding_bl"] = pbl.mean;
+  j["power_sliding_hd"] = phd.mean;
+  j["strain"] = s.strain;
+  j["time"] = s.world.time;
+  j["steps"] = s.steps;
+  j["mean_iterations"] = steps > 0.0 ? iterations / steps : 0.0;
+  j["frac_steps_unconverged"] = steps > 0.0 ? unconverged / steps : 0.0;
+  j["steady_samples"] = v.samples;
+  j["wall_time_s"] = wall_time;
+  return j;
+}
+
+std::string sommerfeld_histogram_csv(const SommerfeldHistogram& h) {
+  double total = h.sticking + h.below + h.above;
+  for (double c : h.count) total += c;
+  const double norm = total > 0.0 ? 1.0 / total : 0.0;
+  std::string out = "s_low,s_high,count,fraction\n";
+  fmt::format_to(std::back_inserter(out), "0,0,{},{:.6g}\n", h.sticking, h.sticking * norm);
+  fmt::format_to(std::back_inserter(out), "0,{:.6g},{},{:.6g}\n",
+                 SommerfeldHistogram::bin_lower_edge(0), h.below, h.below * norm);
+  for (int k = 0; k < SommerfeldHistogram::kBins; ++k) {
+    fmt::format_to(std::back_inserter(out), "{:.6g},{:.6g},{},{:.6g}\n",
+                   SommerfeldHistogram::bin_lower_edge(k),
+                   SommerfeldHistogram::bin_lower_edge(k + 1), h.count[k], h.count[k] * norm);
+  }
+  fmt::format_to(std::back_inserter(out), "{:.6g},inf,{},{:.6g}\n",
+                 SommerfeldHistogram::bin_lower_edge(SommerfeldHistogram::kBins), h.above,
+                 h.above * norm);
+  return out;
+}
+
+}  // namespace dilatant

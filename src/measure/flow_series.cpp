@@ -1,0 +1,46 @@
+#include "measure/flow_series.hpp"
+
+#include <fmt/format.h>
+
+namespace dilatant {
+
+std::string flow_csv_header() {
+  return "t,strain,wall_velocity,gamma_dot,kinetic_energy,contacts,frac_bl,frac_over_slim,"
+         "normal_stress,bottom_force_x,iterations,residual,dt,steps,unconverged_steps\n";
+}
+
+std::string flow_csv_row(const FlowRow& r, double lz) {
+  return fmt::format(
+      "{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.6g},{:.6g},{:.6g},{:.8g},{:.8g},{:.4g},"
+      "{:.3e},{:.4g},{},{}\n",
+      r.t, r.strain, r.wall_velocity, r.wall_velocity / lz, r.kinetic_energy, r.contacts, r.frac_bl,
+      r.frac_over_slim, r.normal_stress, r.bottom_force_x, r.mean_iterations, r.max_residual,
+      r.mean_dt, r.steps, r.unconverged_steps);
+}
+
+FlowRow IntervalSums::close(double t, double strain) const {
+  FlowRow r;
+  r.t = t;
+  r.strain = strain;
+  r.duration = time;
+  if (time <= 0.0) return r;
+  r.wall_velocity = velocity / time;
+  r.kinetic_energy = kinetic_energy / time;
+  r.contacts = contacts / time;
+  r.frac_bl = closed > 0.0 ? boundary / closed : 0.0;
+  r.frac_over_slim = closed > 0.0 ? over_s_lim / closed : 0.0;
+  r.normal_stress = normal_stress / time;
+  r.bottom_force_x = bottom_force_x / time;
+  r.top_force_z = top_force_z / time;
+  r.bottom_force_z = bottom_force_z / time;
+  r.power_bl = power_bl / time;
+  r.power_hd = power_hd / time;
+  r.mean_iterations = iterations / steps;
+  r.max_residual = max_residual;
+  r.mean_dt = time / steps;
+  r.steps = steps;
+  r.unconverged_steps = unconverged;
+  return r;
+}
+
+}  // namespace dilatant

@@ -1,0 +1,56 @@
+#pragma once
+// The shear cell's time series: per-step quantities are accumulated over each
+// output interval (time-weighted) into one row of timeseries.csv; steady-state
+// averages are block averages over the rows past the transient.
+//
+// Error bars: the steady rows are cut into kBlocks consecutive blocks of equal
+// duration; the error is the standard error of the block means. Blocks longer
+// than the correlation time make this honest; with 10 blocks over >= 5 strain
+// units each block spans >= 0.5 strain.
+#include <array>
+#include <string>
+#include <vector>
+
+namespace dilatant {
+
+struct FlowRow {
+  double t = 0.0, strain = 0.0, duration = 0.0;
+  double wall_velocity = 0.0;  // time average over the interval
+  double kinetic_energy = 0.0, contacts = 0.0, frac_bl = 0.0, frac_over_slim = 0.0;
+  double normal_stress = 0.0;   // mean of the walls' z forces / (Lx Ly), compressive > 0
+  double bottom_force_x = 0.0;  // x force on the fixed wall
+  double top_force_z = 0.0, bottom_force_z = 0.0;
+  double power_bl = 0.0, power_hd = 0.0;  // sliding dissipation at particle contacts
+  double mean_iterations = 0.0, max_residual = 0.0, mean_dt = 0.0, steps = 0.0;
+  double unconverged_steps = 0.0;
+};
+
+std::string flow_csv_header();
+std::string flow_csv_row(const FlowRow& row, double lz);
+
+// Sums of one output interval.
+struct IntervalSums {
+  double time = 0.0, velocity = 0.0, kinetic_energy = 0.0, contacts = 0.0;
+  double closed = 0.0, boundary = 0.0, over_s_lim = 0.0;
+  double normal_stress = 0.0, bottom_force_x = 0.0, top_force_z = 0.0, bottom_force_z = 0.0;
+  double power_bl = 0.0, power_hd = 0.0;
+  double iterations = 0.0, max_residual = 0.0, steps = 0.0, unconverged = 0.0;
+
+  FlowRow close(double t, double strain) const;
+};
+
+struct SteadyAverage {
+  double mean = 0.0;
+  double error = 0.0;
+  int samples = 0;
+};
+
+inline constexpr int kBlocks = 10;
+
+// Duration-weighted block average of field(row) over rows with strain > from.
+template <class Field>
+SteadyAverage steady_average(const std::vector<FlowRow>& rows, double from, Field field);
+
+}  // namespace dilatant
+
+#include "measure/flow_series_impl.hpp"
