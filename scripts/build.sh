@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Configures and builds dilatant with Ninja on all cores.
-#   scripts/build.sh [release|sanitize]     (default: release)
+#   scripts/build.sh [release|sanitize] [target...]   (default: release, all targets)
 #     release  -> build/           Release; CLI, tests and benchmarks
 #     sanitize -> build-sanitize/  RelWithDebInfo with ASan + UBSan; no benchmarks
 set -euo pipefail
@@ -9,7 +9,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 case "${1:-release}" in
   release)
     dir=build
-    options=(-DCMAKE_BUILD_TYPE=Release)
+    options=(-DCMAKE_BUILD_TYPE=Release -DDILATANT_SANITIZE=OFF -DDILATANT_BUILD_BENCHMARKS=ON)
     ;;
   sanitize)
     dir=build-sanitize
@@ -17,10 +17,14 @@ case "${1:-release}" in
       -DDILATANT_BUILD_BENCHMARKS=OFF)
     ;;
   *)
-    echo "usage: $0 [release|sanitize]" >&2
+    echo "usage: $0 [release|sanitize] [target...]" >&2
     exit 2
     ;;
 esac
 
+shift $(($# > 0))  # the rest, if any, are targets (e.g. solver_sweep_bench)
+targets=()
+if (($# > 0)); then targets=(--target "$@"); fi
+
 cmake -S . -B "$dir" -G Ninja "${options[@]}"
-cmake --build "$dir" --parallel "$(nproc)"
+cmake --build "$dir" --parallel "$(nproc)" "${targets[@]}"

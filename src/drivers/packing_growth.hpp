@@ -13,6 +13,9 @@
 
 namespace dilatant {
 
+// Overlap a finished packing may keep, relative to the smallest radius.
+inline constexpr double kPackingOverlapTolerance = 1e-6;
+
 struct GrowthReport {
   int inflation_steps = 0;
   int relaxation_steps = 0;

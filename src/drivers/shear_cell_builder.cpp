@@ -1,8 +1,11 @@
 #include "drivers/shear_cell_builder.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <stdexcept>
 
 #include "drivers/packing_growth.hpp"
 #include "drivers/rough_wall.hpp"
@@ -72,6 +75,12 @@ World build_shear_cell(const Config& config, ShearCellGeometry& geometry) {
   const GrowthReport growth = grow_to_full_size(world, geometry.first_mobile, initial_scale);
   geometry.growth_steps = growth.inflation_steps + growth.relaxation_steps;
   geometry.max_overlap = growth.max_overlap;
+  if (growth.max_overlap > kPackingOverlapTolerance * cell.radius_min) {
+    throw std::runtime_error(fmt::format(
+        "could not pack cell.phi = {} without overlaps (largest overlap {:.3g} after {} "
+        "relaxations); lower cell.phi",
+        cell.phi, growth.max_overlap, growth.relaxation_steps));
+  }
 
   SlidingWall wall;
   double wall_mass = 0.0;

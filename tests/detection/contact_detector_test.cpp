@@ -84,8 +84,8 @@ void expect_same_as_brute_force(const World& world, double margin, int min_acros
     EXPECT_EQ(c.normal, e.normal);
     if (c.other >= 0) {
       const Vec3 raw = world.bodies.position[c.i] - world.bodies.position[c.other];
-      if ((raw - world.box.minimum_image(world.bodies.position[c.i],
-                                         world.bodies.position[c.other]))
+      if ((raw -
+           world.box.minimum_image(world.bodies.position[c.i], world.bodies.position[c.other]))
               .norm() > 1e-9) {
         ++across;
       }

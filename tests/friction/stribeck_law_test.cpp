@@ -84,7 +84,8 @@ void expect_hd_root(const StribeckLaw& l, const TangentialProblem& p, const Tang
   // f(v) is a sum of terms of size free_slip, each rounded: a few eps.
   const double f = s.sliding_speed + wp * l.mu(k * s.sliding_speed) - p.free_slip;
   EXPECT_LE(std::abs(f), 8 * kEps * p.free_slip);
-  EXPECT_NEAR(s.impulse, l.mu(s.sommerfeld) * p.normal_impulse, 16 * kEps * p.free_slip / p.compliance);
+  EXPECT_NEAR(s.impulse, l.mu(s.sommerfeld) * p.normal_impulse,
+              16 * kEps * p.free_slip / p.compliance);
   EXPECT_NEAR(s.impulse, (p.free_slip - s.sliding_speed) / p.compliance, 4 * kEps * s.impulse);
 }
 

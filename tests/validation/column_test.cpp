@@ -116,7 +116,8 @@ TEST(Column, ContactsCarryTheWeightAboveAndNothingDrifts) {
   const double p_norm = static_norm * kDt;
   const double force_bound = 4.0 * bounds.kappa * tol;
   const double mean_bound = 2.0 * bounds.kappa * tol / kSteps;
-  const double drift_bound = std::sqrt(double(kN)) * kDt * bounds.norm_w * bounds.kappa * tol * p_norm;
+  const double drift_bound =
+      std::sqrt(double(kN)) * kDt * bounds.norm_w * bounds.kappa * tol * p_norm;
 
   double mean_error_squared = 0.0;
   for (std::size_t c = 0; c < stepper.contacts().size(); ++c) {

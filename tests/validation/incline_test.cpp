@@ -55,9 +55,9 @@ std::vector<Sample> release_on_incline(double theta, double dt, int steps) {
     const Bodies& b = world.bodies;
     const Vec3 u =
         scenes::contact_point_velocity(b.velocity[0], b.angular_velocity[0], kR, Vec3::UnitZ());
-    out.push_back(Sample{world.time, b.position[0].x(), b.velocity[0].x(), b.angular_velocity[0].y(),
-                         u.x(), c ? c->p_n / dt : 0.0, c ? c->regime : Regime::Open,
-                         report.solve.converged});
+    out.push_back(Sample{world.time, b.position[0].x(), b.velocity[0].x(),
+                         b.angular_velocity[0].y(), u.x(), c ? c->p_n / dt : 0.0,
+                         c ? c->regime : Regime::Open, report.solve.converged});
   }
   return out;
 }
@@ -72,8 +72,8 @@ void expect_kinematics(double theta, bool rolls) {
   constexpr double dt = 1e-3;
   constexpr int steps = 1000;  // one second
   const double m = scenes::sphere_mass(kR);
-  const double a = rolls ? 5.0 / 7.0 * kG * std::sin(theta)
-                         : kG * (std::sin(theta) - kMu * std::cos(theta));
+  const double a =
+      rolls ? 5.0 / 7.0 * kG * std::sin(theta) : kG * (std::sin(theta) - kMu * std::cos(theta));
   const double alpha = rolls ? a / kR : 2.5 * kMu * kG * std::cos(theta) / kR;
   const double v_max = a * steps * dt;
   const double n_exact = m * kG * std::cos(theta);
@@ -111,8 +111,8 @@ void expect_kinematics(double theta, bool rolls) {
 
 // Position error of implicit Euler: exactly a t dt / 2, halving with dt.
 void expect_first_order_positions(double theta, bool rolls) {
-  const double a = rolls ? 5.0 / 7.0 * kG * std::sin(theta)
-                         : kG * (std::sin(theta) - kMu * std::cos(theta));
+  const double a =
+      rolls ? 5.0 / 7.0 * kG * std::sin(theta) : kG * (std::sin(theta) - kMu * std::cos(theta));
   constexpr double T = 0.5;
   double previous_error = 0.0;
   for (double dt : {2e-3, 1e-3, 5e-4}) {
@@ -138,9 +138,7 @@ const double kThetaSlide = std::atan(3.5 * kMu * 1.02);
 TEST(Incline, RollsBelowThreshold) { expect_kinematics(kThetaRoll, true); }
 TEST(Incline, SlidesAboveThreshold) { expect_kinematics(kThetaSlide, false); }
 TEST(Incline, RollingPositionIsFirstOrderInDt) { expect_first_order_positions(kThetaRoll, true); }
-TEST(Incline, SlidingPositionIsFirstOrderInDt) {
-  expect_first_order_positions(kThetaSlide, false);
-}
+TEST(Incline, SlidingPositionIsFirstOrderInDt) { expect_first_order_positions(kThetaSlide, false); }
 
 }  // namespace
 }  // namespace dilatant

@@ -1,14 +1,14 @@
 #pragma once
 // Small builders and look-ups shared by the validation tests: a world with a
 // floor, the mass of a sphere, and finding a contact of the last step.
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "solver/contact.hpp"
 #include "world/world.hpp"

@@ -77,8 +77,8 @@ void expect_slide_then_roll(double dt) {
 
   // Position: right Riemann sum of exact grid velocities.
   const double T = world.time;
-  const double x_exact = kV0 * t_star - 0.5 * kMu * kG * t_star * t_star +
-                         5.0 / 7.0 * kV0 * (T - t_star);
+  const double x_exact =
+      kV0 * t_star - 0.5 * kMu * kG * t_star * t_star + 5.0 / 7.0 * kV0 * (T - t_star);
   const double predicted = 0.5 * dt * (5.0 / 7.0 * kV0 - kV0);
   const double x_error = world.bodies.position[0].x() - x_exact;
   scenes::record("position_error" + tag, x_error);

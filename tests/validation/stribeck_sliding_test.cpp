@@ -72,9 +72,7 @@ struct Problem {
 };
 
 // The law written out again, independently of StribeckLaw (s < s_lim here).
-double mu_reference(double s) {
-  return s < kSc ? kMu0 : 2.0 * kPi * s * std::log(kA / s);
-}
+double mu_reference(double s) { return s < kSc ? kMu0 : 2.0 * kPi * s * std::log(kA / s); }
 
 // RK4 of dv/dt = -7/2 g mu(k v), sampled at multiples of `sample`, with `sub`
 // substeps per sample; the jump to BL is located by bisection on the step size.
