@@ -45,8 +45,18 @@ TangentialSolution StribeckLaw::solve(const TangentialProblem& p) const {
   const double wp = w * p.normal_impulse;
   const double s_cap = s_lim;
   auto f = [&](double v) { return v + wp * mu(k * v) - p.free_slip; };
-  double lo = s_c / k;      // f(lo) <= 0
+  double lo = s_c / k;      // f(lo) <= 0 when mu_HD(s_c) <= mu0
   double hi = p.free_slip;  // f(hi) >= 0
+  if (f(lo) >= 0.0) {
+    // mu_HD(s_c) > mu0 (a tiny mu0): neither branch is consistent, the solution
+    // sits on the jump itself, sliding at s = s_c with a friction between mu0
+    // and mu_HD(s_c) -- the set-valued law's only answer.
+    out.sliding_speed = lo;
+    out.sommerfeld = s_c;
+    out.impulse = (p.free_slip - lo) / w;
+    out.regime = Regime::Hydrodynamic;
+    return out;
+  }
   double v = v_bl;          // BL speed is an upper estimate: mu_HD < mu0 near s_c
   if (v < lo || v > hi) v = 0.5 * (lo + hi);
   for (int it = 0; it < 100; ++it) {

@@ -14,8 +14,11 @@
 //      (s = k v_s because N = p_n/dt). f(v_c) <= 0 at v_c = s_c/k (step 2 failed
 //      and mu_HD(s_c) < mu0) and f(|u_t_free|) >= 0, so a root lies in between;
 //      mu is increasing on the HD branch up to s = 5/(6 pi e) ~ 0.0976, so f is
-//      monotone there and the root is unique. We find it by Newton's method
-//      safeguarded by bisection.
+//      monotone there and the root is unique (up to s_lim = 0.1, slightly past
+//      the maximum, where mu falls by < 0.1%). We find it by Newton's method
+//      safeguarded by bisection. If mu0 < mu_HD(s_c) (mu0 below ~0.003 at the
+//      default s_c), f(v_c) > 0 and the contact slides exactly at s = s_c with
+//      the friction in between that the jump allows.
 //  The paper's HD formula needs s_c < 5/(6 pi) for mu > 0; the config checks it.
 #include "friction/tangential_problem.hpp"
 

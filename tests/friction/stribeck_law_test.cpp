@@ -171,3 +171,20 @@ TEST(Regime, Names) {
 
 }  // namespace
 }  // namespace dilatant
+
+// With mu0 below mu_HD(s_c) neither the BL nor the HD branch is consistent; the
+// contact must slide exactly at s = s_c with a friction between the two.
+TEST(StribeckLawJump, TinyMu0SlidesOnTheJump) {
+  const dilatant::StribeckLaw law{0.001, 5e-5, 0.1, 1.0};
+  const double mu_c = dilatant::StribeckLaw::hydrodynamic_mu(5e-5);
+  ASSERT_GT(mu_c, 0.001);
+  // k = eta R_p dt / p_n = 1e-3 -> v_c = s_c / k = 0.05. A free slip between
+  // v_c + w p_n mu0 = 0.051 and v_c + w p_n mu_HD(s_c) = 0.0527 fails both branches.
+  const dilatant::TangentialProblem p{0.052, 1.0, 1.0, 1e-3, 1.0};
+  const auto sol = law.solve(p);
+  EXPECT_DOUBLE_EQ(sol.sommerfeld, 5e-5);
+  EXPECT_NEAR(sol.sliding_speed, 0.05, 1e-15);
+  const double mu_eff = sol.impulse / p.normal_impulse;
+  EXPECT_GE(mu_eff, 0.001);
+  EXPECT_LE(mu_eff, mu_c);
+}
