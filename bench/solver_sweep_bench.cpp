@@ -20,7 +20,7 @@
 //   * then the affine simple shear v_x = gamma_dot (z - 13.5), w_y = gamma_dot / 2
 //     is imposed and ONE step (tolerance 1e-6) is taken from that same state with
 //     each friction law. Its contacts, impulses and end-of-step velocities are the
-//     input of the benchmarks: about 4300 contacts (margin included), 2800 loaded.
+//     input of the benchmarks: about 4300 contacts (margin included), 2900 loaded.
 //     Sliding gives a mix of regimes; for Stribeck, eta_f is chosen so that the
 //     median Sommerfeld number of the loaded, sliding contacts of the Coulomb step
 //     equals s_c (about 0.2 stick, 0.2 bl, 0.2 hd; the rest are open).

@@ -72,7 +72,8 @@ void ContactDetector::build_cells(const World& world, double cell_size) {
   for (int c = 0; c < total; ++c) cell_start_[c + 1] += cell_start_[c];
   cell_body_.resize(n);
   std::vector<std::int32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
-  for (std::size_t i = 0; i < n; ++i) cell_body_[fill[body_cell_[i]]++] = static_cast<std::int32_t>(i);
+  for (std::size_t i = 0; i < n; ++i)
+    cell_body_[fill[body_cell_[i]]++] = static_cast<std::int32_t>(i);
 }
 
 void ContactDetector::add_pair_contacts(const World& world, double margin,
@@ -92,7 +93,10 @@ void ContactDetector::add_pair_contacts(const World& world, double margin,
           bool inside = true;
           for (int k = 0; k < 3; ++k) {
             if (c[k] >= 0 && c[k] < n_cells_[k]) continue;
-            if (!world.box.periodic[k]) { inside = false; break; }
+            if (!world.box.periodic[k]) {
+              inside = false;
+              break;
+            }
             c[k] = (c[k] + n_cells_[k]) % n_cells_[k];
           }
           if (inside) neighbours[count++] = (c[2] * n_cells_[1] + c[1]) * n_cells_[0] + c[0];

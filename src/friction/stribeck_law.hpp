@@ -19,6 +19,9 @@
 //      safeguarded by bisection. If mu0 < mu_HD(s_c) (mu0 below ~0.003 at the
 //      default s_c), f(v_c) > 0 and the contact slides exactly at s = s_c with
 //      the friction in between that the jump allows.
+//  A solver may impose the branch (TangentialProblem::branch): Boundary skips the
+//  s < s_c test of step 2, Hydrodynamic solves step 3 on the whole HD curve
+//  (v_s from 0). See solver/contact_solver.hpp for why.
 //  The paper's HD formula needs s_c < 5/(6 pi) for mu > 0; the config checks it.
 #include "friction/tangential_problem.hpp"
 
@@ -34,6 +37,9 @@ struct StribeckLaw {
   static double hydrodynamic_mu(double s);
   double mu(double s) const;
   TangentialSolution solve(const TangentialProblem& p) const;
+
+ private:
+  double hydrodynamic_root(const TangentialProblem& p, double k, double lo, double guess) const;
 };
 
 }  // namespace dilatant

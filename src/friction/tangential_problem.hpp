@@ -13,12 +13,17 @@
 
 namespace dilatant {
 
+// Which branch of a velocity-dependent law the solver imposes (Any: the law's
+// own deterministic rule).
+enum class FrictionBranch : std::uint8_t { Any, Boundary, Hydrodynamic };
+
 struct TangentialProblem {
   double free_slip = 0.0;       // |u_t_free|, sliding speed without friction impulse
   double compliance = 0.0;      // w_t, sliding speed removed per unit tangential impulse
   double normal_impulse = 0.0;  // p_n of this contact, already solved
   double dt = 0.0;              // time step: the normal force is N = p_n / dt
   double reduced_radius = 0.0;  // R_p of the Sommerfeld number
+  FrictionBranch branch = FrictionBranch::Any;
 };
 
 enum class Regime : std::uint8_t {

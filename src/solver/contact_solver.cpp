@@ -29,8 +29,23 @@ inline void apply_impulse(const Contact& c, const Vec3& dp, Bodies& b) {
   }
 }
 
+// The branch a contact keeps once branches are frozen: the one it took last.
+inline FrictionBranch frozen_branch(Regime r) {
+  switch (r) {
+    case Regime::Stick:
+    case Regime::BoundaryLubricated:
+      return FrictionBranch::Boundary;
+    case Regime::Hydrodynamic:
+      return FrictionBranch::Hydrodynamic;
+    case Regime::Open:
+      break;
+  }
+  return FrictionBranch::Any;
+}
+
 template <class Law>
-SweepChange sweep(std::span<Contact> contacts, Bodies& b, const Law& law, double dt) {
+SweepChange sweep(std::span<Contact> contacts, Bodies& b, const Law& law, double dt,
+                  bool freeze_branches) {
   SweepChange change;
   const double inv_dt = 1.0 / dt;
   for (Contact& c : contacts) {
@@ -42,8 +57,9 @@ SweepChange sweep(std::span<Contact> contacts, Bodies& b, const Law& law, double
 
     const double p_n = std::max(0.0, -(u_n_free + c.gap * inv_dt) / c.w_n);
     const double free_slip = u_t_free.norm();
-    const TangentialSolution t =
-        law.solve(TangentialProblem{free_slip, c.w_t, p_n, dt, c.reduced_radius});
+    const TangentialSolution t = law.solve(
+        TangentialProblem{free_slip, c.w_t, p_n, dt, c.reduced_radius,
+                          freeze_branches ? frozen_branch(c.regime) : FrictionBranch::Any});
     const Vec3 p_t = free_slip > 0.0 ? Vec3((-t.impulse / free_slip) * u_t_free) : Vec3::Zero();
 
     const Vec3 dp = (p_n - c.p_n) * c.normal + (p_t - c.p_t);
@@ -82,16 +98,16 @@ double round_off_floor_squared(const std::vector<Contact>& contacts, const Bodie
 }
 
 SweepChange sweep_range(std::vector<Contact>& contacts, std::size_t begin, std::size_t end,
-                        Bodies& bodies, const FrictionLaw& law, double dt) {
+                        Bodies& bodies, const FrictionLaw& law, double dt, bool freeze) {
   std::span<Contact> part(contacts.data() + begin, end - begin);
-  return std::visit([&](const auto& l) { return sweep(part, bodies, l, dt); }, law);
+  return std::visit([&](const auto& l) { return sweep(part, bodies, l, dt, freeze); }, law);
 }
 
 }  // namespace
 
 SweepChange gauss_seidel_sweep(std::vector<Contact>& contacts, Bodies& bodies,
                                const FrictionLaw& law, double dt) {
-  return sweep_range(contacts, 0, contacts.size(), bodies, law, dt);
+  return sweep_range(contacts, 0, contacts.size(), bodies, law, dt, false);
 }
 
 void WallBlock::update(const std::vector<Contact>& contacts, Bodies& bodies) const {
@@ -118,9 +134,10 @@ SolveReport solve_contacts(std::vector<Contact>& contacts, std::size_t wall_begi
   report.converged = false;
   const double noise_squared = round_off_floor_squared(contacts, bodies);
   while (report.iterations < settings.max_iterations) {
-    SweepChange ch = sweep_range(contacts, 0, wall_begin, bodies, law, dt);
+    const bool freeze = report.iterations >= settings.freeze_branches_after;
+    SweepChange ch = sweep_range(contacts, 0, wall_begin, bodies, law, dt, freeze);
     const SweepChange ch_wall =
-        sweep_range(contacts, wall_begin, contacts.size(), bodies, wall_law, dt);
+        sweep_range(contacts, wall_begin, contacts.size(), bodies, wall_law, dt, freeze);
     ch.change_squared += ch_wall.change_squared;
     ch.impulse_squared += ch_wall.impulse_squared;
     if (wall != nullptr) wall->update(contacts, bodies);

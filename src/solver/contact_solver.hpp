@@ -45,6 +45,17 @@
 // (tests/validation/head_on_collision_test.cpp).
 // Warm start: impulses of the previous step are applied before the first sweep.
 //
+// Frozen branches. With the Stribeck law the friction jumps from mu0 to
+// mu_HD(s_c) ~ 0.003 at s = s_c. A contact near the jump flips branch from one
+// sweep to the next as its neighbours move, changing its impulse by ~mu0 p_n
+// each time, and the iteration cycles instead of converging (a prototype hit
+// its cap in half the steps). After `freeze_branches_after` sweeps each contact
+// therefore keeps the branch it took last (BL: stick or slide with mu0; HD:
+// slide on mu_HD(s) for any s), which is a continuous problem that Gauss–Seidel
+// solves. Only contacts within the jump's reach can end up "inconsistent" (a BL
+// contact at s slightly above s_c or vice versa); their number is what the
+// branch rule could not decide anyway.
+//
 // The moving wall (shear cell) is one more block of the Gauss–Seidel iteration:
 // its spheres have infinite mass in the contact problems, and after each sweep
 // its velocity is solved exactly given the contact impulses,
@@ -64,6 +75,7 @@ namespace dilatant {
 struct SolverSettings {
   double tolerance = 1e-6;  // on the relative impulse change of one sweep
   int max_iterations = 1000;
+  int freeze_branches_after = 50;  // sweeps before each contact keeps its friction branch
 };
 
 struct SolveReport {
