@@ -13,6 +13,7 @@
 #include "io/atomic_file.hpp"
 #include "io/contacts_csv.hpp"
 #include "io/vtk_writer.hpp"
+#include "measure/bulk_fraction.hpp"
 #include "measure/wall_forces.hpp"
 #include "solver/time_stepper.hpp"
 
@@ -41,6 +42,10 @@ double choose_dt(const Config& config, const World& world) {
   const SlidingWall& wall = *world.sliding_wall;
   const double dt_drive = std::sqrt(2.0 * kDisplacement * r_min * wall.mass / wall.drive_force);
   return v_max > 0.0 ? std::min(dt_drive, kDisplacement * r_min / v_max) : dt_drive;
+}
+
+double central_phi(const World& world, double lz) {
+  return slab_volume_fraction(world, 0.25 * lz, 0.75 * lz);
 }
 
 ShearCellState initial_state(const Config& config) {
@@ -159,6 +164,7 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
 
     if (s.strain >= s.next_row_strain) {
       s.rows.push_back(s.interval.close(s.world.time, s.strain));
+      s.rows.back().phi_bulk = central_phi(s.world, lz);
       s.interval = IntervalSums{};
       s.next_row_strain += config.run.output_interval;
     }

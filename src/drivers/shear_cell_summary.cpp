@@ -27,6 +27,7 @@ nlohmann::json cell_summary(const Config& config, const ShearCellState& s, doubl
   const auto p = steady_average(s.rows, from, [](const FlowRow& r) { return r.normal_stress; });
   const auto bl = steady_average(s.rows, from, [](const FlowRow& r) { return r.frac_bl; });
   const auto over = steady_average(s.rows, from, [](const FlowRow& r) { return r.frac_over_slim; });
+  const auto phi_bulk = steady_average(s.rows, from, [](const FlowRow& r) { return r.phi_bulk; });
   const auto fx = steady_average(s.rows, from, [](const FlowRow& r) { return r.bottom_force_x; });
   const auto pbl = steady_average(s.rows, from, [](const FlowRow& r) { return r.power_bl; });
   const auto phd = steady_average(s.rows, from, [](const FlowRow& r) { return r.power_hd; });
@@ -56,6 +57,8 @@ nlohmann::json cell_summary(const Config& config, const ShearCellState& s, doubl
   j["friction_law"] = config.friction.law == FrictionLawKind::Coulomb ? "coulomb" : "stribeck";
   j["phi"] = s.geometry.phi;
   j["phi_requested"] = cell.phi;
+  j["phi_bulk"] = phi_bulk.mean;  // central half of the gap, steady-state average
+  j["phi_bulk_err"] = phi_bulk.error;
   j["mobile_spheres"] = s.geometry.mobile_count;
   j["wall_radius_mean"] = s.geometry.wall_radius_mean;
   j["shear_stress"] = cell.shear_stress / u.stress_unit;

@@ -23,6 +23,7 @@ struct FlowRow {
   double power_bl = 0.0, power_hd = 0.0;  // sliding dissipation at particle contacts
   double mean_iterations = 0.0, max_residual = 0.0, mean_dt = 0.0, steps = 0.0;
   double unconverged_steps = 0.0;
+  double phi_bulk = 0.0;  // central half of the gap, at the end of the interval
 };
 
 std::string flow_csv_header();
