@@ -115,6 +115,7 @@ void accumulate_step(const Config& config, ShearCellState& s, const StepReport& 
   a.max_residual = std::max(a.max_residual, report.solve.residual);
   a.steps += 1.0;
   a.unconverged += report.solve.converged ? 0.0 : 1.0;
+  a.max_overlap = std::max(a.max_overlap, report.max_overlap);
   if (steady) s.profile.add(s.world, dt);
 }
 

@@ -40,6 +40,7 @@ FlowRow IntervalSums::close(double t, double strain) const {
   r.mean_dt = time / steps;
   r.steps = steps;
   r.unconverged_steps = unconverged;
+  r.max_overlap = max_overlap;
   return r;
 }
 

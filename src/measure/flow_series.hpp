@@ -23,7 +23,9 @@ struct FlowRow {
   double power_bl = 0.0, power_hd = 0.0;  // sliding dissipation at particle contacts
   double mean_iterations = 0.0, max_residual = 0.0, mean_dt = 0.0, steps = 0.0;
   double unconverged_steps = 0.0;
-  double phi_bulk = 0.0;  // central half of the gap, at the end of the interval
+  double phi_bulk = 0.0;
+  double max_overlap = 0.0;  // largest overlap at the end of any step of the interval  // central
+                             // half of the gap, at the end of the interval
 };
 
 std::string flow_csv_header();
@@ -36,6 +38,7 @@ struct IntervalSums {
   double normal_stress = 0.0, bottom_force_x = 0.0, top_force_z = 0.0, bottom_force_z = 0.0;
   double power_bl = 0.0, power_hd = 0.0;
   double iterations = 0.0, max_residual = 0.0, steps = 0.0, unconverged = 0.0;
+  double max_overlap = 0.0;
 
   FlowRow close(double t, double strain) const;
 };
