@@ -19,14 +19,16 @@ double StribeckLaw::mu(double s) const {
   return hydrodynamic_mu(s < s_lim ? s : s_lim);
 }
 
-double StribeckLaw::hydrodynamic_root(const TangentialProblem& p, double k, double lo,
-                                      double guess) const {
+double StribeckLaw::hydrodynamic_root(const TangentialProblem& p, double k, double lo) const {
   // Root of f(v) = v + w p_n mu_HD(k v) - free_slip on [lo, free_slip]; f(lo) <= 0 <= f(hi).
   const double wp = p.compliance * p.normal_impulse;
   auto mu_hd = [&](double s) { return hydrodynamic_mu(s < s_lim ? s : s_lim); };
   auto f = [&](double v) { return v + wp * mu_hd(k * v) - p.free_slip; };
   double hi = p.free_slip;
-  double v = (guess > lo && guess < hi) ? guess : 0.5 * (lo + hi);
+  // HD friction is weak, so the root lies near the free slip: one fixed-point
+  // step from there is a close start for Newton's method.
+  double v = p.free_slip - wp * mu_hd(k * p.free_slip);
+  if (!(v > lo && v < hi)) v = 0.5 * (lo + hi);
   for (int it = 0; it < 100; ++it) {
     const double fv = f(v);
     if (fv == 0.0) return v;  // exact root: bisecting on would only throw it away
@@ -38,7 +40,8 @@ double StribeckLaw::hydrodynamic_root(const TangentialProblem& p, double k, doub
     const double dmu = s < s_lim ? kTwoPi * (std::log(kLubricationScale / s) - 1.0) : 0.0;
     double next = v - fv / (1.0 + wp * dmu * k);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // Newton left the bracket
-    if (std::abs(next - v) <= 1e-15 * v || hi - lo <= 1e-15 * hi) return next;
+    // 1e-13 relative: far below any Gauss–Seidel tolerance, a few ulps above round-off.
+    if (std::abs(next - v) <= 1e-13 * v || hi - lo <= 1e-13 * hi) return next;
     v = next;
   }
   return v;
@@ -76,7 +79,7 @@ TangentialSolution StribeckLaw::solve(const TangentialProblem& p) const {
     return sliding(p.free_slip, Regime::Hydrodynamic);
   }
   if (p.branch == FrictionBranch::Hydrodynamic) {
-    return sliding(hydrodynamic_root(p, k, 0.0, v_bl), Regime::Hydrodynamic);
+    return sliding(hydrodynamic_root(p, k, 0.0), Regime::Hydrodynamic);
   }
   // Branch 3: hydrodynamic sliding above s_c.
   const double v_c = s_c / k;
@@ -86,8 +89,7 @@ TangentialSolution StribeckLaw::solve(const TangentialProblem& p) const {
     // and mu_HD(s_c) -- the set-valued law's only answer.
     return sliding(v_c, Regime::Hydrodynamic);
   }
-  // The BL speed is an upper estimate: mu_HD < mu0 near s_c.
-  return sliding(hydrodynamic_root(p, k, v_c, v_bl), Regime::Hydrodynamic);
+  return sliding(hydrodynamic_root(p, k, v_c), Regime::Hydrodynamic);
 }
 
 }  // namespace dilatant

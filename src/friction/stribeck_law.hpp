@@ -39,7 +39,7 @@ struct StribeckLaw {
   TangentialSolution solve(const TangentialProblem& p) const;
 
  private:
-  double hydrodynamic_root(const TangentialProblem& p, double k, double lo, double guess) const;
+  double hydrodynamic_root(const TangentialProblem& p, double k, double lo) const;
 };
 
 }  // namespace dilatant
