@@ -44,6 +44,11 @@ double choose_dt(const Config& config, const World& world) {
   return v_max > 0.0 ? std::min(dt_drive, kDisplacement * r_min / v_max) : dt_drive;
 }
 
+double total_kinetic_energy(const World& world) {
+  const SlidingWall& wall = *world.sliding_wall;
+  return world.bodies.kinetic_energy() + 0.5 * wall.mass * wall.velocity * wall.velocity;
+}
+
 double central_phi(const World& world, double lz) {
   return slab_volume_fraction(world, 0.25 * lz, 0.75 * lz);
 }
@@ -109,8 +114,11 @@ void accumulate_step(const Config& config, ShearCellState& s, const StepReport& 
   a.bottom_force_x += f.bottom[0] * dt;
   a.top_force_z += f.top[2] * dt;
   a.bottom_force_z += f.bottom[2] * dt;
-  a.power_bl += n.sliding_power_bl * dt;
-  a.power_hd += n.sliding_power_hd * dt;
+  a.sliding_bl += n.sliding_power_bl * dt;
+  a.sliding_hd += n.sliding_power_hd * dt;
+  a.work_normal += report.contact_work.normal;
+  a.work_bl += report.contact_work.tangential_bl;
+  a.work_hd += report.contact_work.tangential_hd;
   a.iterations += report.solve.iterations;
   a.max_residual = std::max(a.max_residual, report.solve.residual);
   a.steps += 1.0;
@@ -158,10 +166,18 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
   while (s.strain < config.run.strain && !s.jammed) {
     s.dt = choose_dt(config, s.world);
     stepper.set_dt(s.dt);
+    const SlidingWall& wall = *s.world.sliding_wall;
+    if (s.interval.steps == 0.0) s.interval.kinetic_start = total_kinetic_energy(s.world);
+    // Work of the drive over the prediction, F dt (V + V_free)/2: exactly the
+    // wall's kinetic-energy gain before the contacts act.
+    const double drive_work =
+        wall.drive_force * s.dt * (wall.velocity + 0.5 * s.dt * wall.drive_force / wall.mass);
     const StepReport report = stepper.step(s.world);
     ++s.steps;
     s.strain += s.world.sliding_wall->velocity * s.dt / lz;
     accumulate_step(config, s, report, stepper.contacts());
+    s.interval.work_drive += drive_work;
+    s.interval.kinetic_end = total_kinetic_energy(s.world);
 
     if (s.strain >= s.next_row_strain) {
       s.rows.push_back(s.interval.close(s.world.time, s.strain));

@@ -35,8 +35,17 @@ nlohmann::json cell_summary(const Config& config, const ShearCellState& s, doubl
   double max_overlap = 0.0;
   for (const FlowRow& r : s.rows) max_overlap = std::max(max_overlap, r.max_overlap);
   const auto fx = steady_average(s.rows, from, [](const FlowRow& r) { return r.bottom_force_x; });
-  const auto pbl = steady_average(s.rows, from, [](const FlowRow& r) { return r.power_bl; });
-  const auto phd = steady_average(s.rows, from, [](const FlowRow& r) { return r.power_hd; });
+  const auto sliding_bl =
+      steady_average(s.rows, from, [](const FlowRow& r) { return r.sliding_bl; });
+  const auto sliding_hd =
+      steady_average(s.rows, from, [](const FlowRow& r) { return r.sliding_hd; });
+  const auto p_drive = steady_average(s.rows, from, [](const FlowRow& r) { return r.power_drive; });
+  const auto p_normal =
+      steady_average(s.rows, from, [](const FlowRow& r) { return -r.power_normal; });
+  const auto p_bl = steady_average(s.rows, from, [](const FlowRow& r) { return -r.power_bl; });
+  const auto p_hd = steady_average(s.rows, from, [](const FlowRow& r) { return -r.power_hd; });
+  const auto p_kinetic =
+      steady_average(s.rows, from, [](const FlowRow& r) { return r.power_kinetic; });
   double unconverged = 0.0, iterations = 0.0, steps = 0.0;
   for (const FlowRow& r : s.rows) {
     unconverged += r.unconverged_steps;
@@ -86,6 +95,8 @@ nlohmann::json cell_summary(const Config& config, const ShearCellState& s, doubl
     j["eta"] = eta;
     j["eta_err"] = eta * rel_err;
   }
+  j["wall_velocity"] = v.mean;  // code units, sqrt(tau/rho_p)
+  j["wall_velocity_err"] = v.error;
   j["gamma_dot_bulk"] = bulk.slope / u.rate_unit;
   j["gamma_dot_gap"] = s.jammed ? 0.0 : gdot_gap / u.rate_unit;
   j["profile_consistent"] = profile_consistent;
@@ -107,9 +118,21 @@ nlohmann::json cell_summary(const Config& config, const ShearCellState& s, doubl
   j["bottom_wall_force_z_err"] = fz_bottom.error;
   j["max_overlap"] = max_overlap;
   j["applied_force_x"] = cell.shear_stress * area;
-  j["power_injected"] = cell.shear_stress * area * v.mean;
-  j["power_sliding_bl"] = pbl.mean;
-  j["power_sliding_hd"] = phd.mean;
+  // Energy budget of the steady state, code units (force x velocity): the drive's
+  // power equals the dissipation in impacts and friction plus d(KE)/dt.
+  j["power_injected"] = p_drive.mean;
+  j["power_injected_err"] = p_drive.error;
+  j["power_impacts"] = p_normal.mean;  // perfectly inelastic normal impacts
+  j["power_impacts_err"] = p_normal.error;
+  j["power_friction_bl"] = p_bl.mean;  // tangential impulses at stick/BL contacts
+  j["power_friction_bl_err"] = p_bl.error;
+  j["power_friction_hd"] = p_hd.mean;
+  j["power_friction_hd_err"] = p_hd.error;
+  j["power_kinetic"] = p_kinetic.mean;  // d(KE)/dt
+  j["power_kinetic_err"] = p_kinetic.error;
+  // |F_t| v_s at particle-particle contacts: the continuous sliding dissipation.
+  j["power_sliding_bl"] = sliding_bl.mean;
+  j["power_sliding_hd"] = sliding_hd.mean;
   j["strain"] = s.strain;
   j["time"] = s.world.time;
   j["steps"] = s.steps;

@@ -33,8 +33,13 @@ FlowRow IntervalSums::close(double t, double strain) const {
   r.bottom_force_x = bottom_force_x / time;
   r.top_force_z = top_force_z / time;
   r.bottom_force_z = bottom_force_z / time;
-  r.power_bl = power_bl / time;
-  r.power_hd = power_hd / time;
+  r.sliding_bl = sliding_bl / time;
+  r.sliding_hd = sliding_hd / time;
+  r.power_drive = work_drive / time;
+  r.power_normal = work_normal / time;
+  r.power_bl = work_bl / time;
+  r.power_hd = work_hd / time;
+  r.power_kinetic = (kinetic_end - kinetic_start) / time;
   r.mean_iterations = iterations / steps;
   r.max_residual = max_residual;
   r.mean_dt = time / steps;

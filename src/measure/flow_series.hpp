@@ -20,12 +20,15 @@ struct FlowRow {
   double normal_stress = 0.0;   // mean of the walls' z forces / (Lx Ly), compressive > 0
   double bottom_force_x = 0.0;  // x force on the fixed wall
   double top_force_z = 0.0, bottom_force_z = 0.0;
-  double power_bl = 0.0, power_hd = 0.0;  // sliding dissipation at particle contacts
+  double sliding_bl = 0.0, sliding_hd = 0.0;  // sum |F_t| v_s at particle contacts
   double mean_iterations = 0.0, max_residual = 0.0, mean_dt = 0.0, steps = 0.0;
   double unconverged_steps = 0.0;
-  double phi_bulk = 0.0;
-  double max_overlap = 0.0;  // largest overlap at the end of any step of the interval  // central
-                             // half of the gap, at the end of the interval
+  double phi_bulk = 0.0;     // central half of the gap, at the end of the interval
+  double max_overlap = 0.0;  // largest overlap at the end of any step of the interval
+  // Powers: drive, contact work by kind (< 0: dissipation; solver/contact_work.hpp),
+  // and the rate of change of the total kinetic energy (particles and wall).
+  double power_drive = 0.0, power_normal = 0.0, power_bl = 0.0, power_hd = 0.0;
+  double power_kinetic = 0.0;
 };
 
 std::string flow_csv_header();
@@ -36,9 +39,11 @@ struct IntervalSums {
   double time = 0.0, velocity = 0.0, kinetic_energy = 0.0, contacts = 0.0;
   double closed = 0.0, boundary = 0.0, over_s_lim = 0.0;
   double normal_stress = 0.0, bottom_force_x = 0.0, top_force_z = 0.0, bottom_force_z = 0.0;
-  double power_bl = 0.0, power_hd = 0.0;
+  double sliding_bl = 0.0, sliding_hd = 0.0;
   double iterations = 0.0, max_residual = 0.0, steps = 0.0, unconverged = 0.0;
   double max_overlap = 0.0;
+  double work_drive = 0.0, work_normal = 0.0, work_bl = 0.0, work_hd = 0.0;
+  double kinetic_start = 0.0, kinetic_end = 0.0;  // total, particles and wall
 
   FlowRow close(double t, double strain) const;
 };

@@ -9,15 +9,6 @@ namespace dilatant {
 
 namespace {
 
-// Relative velocity of i's surface w.r.t. the partner's at the contact point.
-inline Vec3 relative_velocity(const Contact& c, const Bodies& b) {
-  Vec3 u = b.velocity[c.i] - c.arm_i * b.angular_velocity[c.i].cross(c.normal);
-  if (!c.with_plane()) {
-    u -= b.velocity[c.other] + c.arm_j * b.angular_velocity[c.other].cross(c.normal);
-  }
-  return u;
-}
-
 // Applies impulse dp to i and -dp to the partner, at their contact points.
 inline void apply_impulse(const Contact& c, const Vec3& dp, Bodies& b) {
   const Vec3 n_x_dp = c.normal.cross(dp);

@@ -95,6 +95,10 @@ StepReport TimeStepper::step(World& world) {
   // 2. detect, 3. warm start, 4. solve
   detector_.detect(world, detection_margin(world), contacts_);
   order_wall_contacts_last(world);
+  free_velocity_.resize(contacts_.size());
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    free_velocity_[k] = relative_velocity(contacts_[k], b);
+  }
   warm_start(b);
   if (world.sliding_wall) {
     const WallBlock block = make_wall_block(world, wall_free_velocity);
@@ -113,6 +117,11 @@ StepReport TimeStepper::step(World& world) {
     ++report.contacts_closed;
   }
   report.contacts_detected = contacts_.size();
+  end_velocity_.resize(contacts_.size());
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    end_velocity_[k] = relative_velocity(contacts_[k], b);
+  }
+  report.contact_work = contact_work(contacts_, free_velocity_, end_velocity_);
 
   // 6. integrate positions with the end-of-step velocities (a body of infinite
   // mass may still move at a prescribed velocity, like a driven wall)

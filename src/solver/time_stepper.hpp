@@ -18,6 +18,7 @@
 #include "detection/contact_detector.hpp"
 #include "friction/friction_law.hpp"
 #include "solver/contact_solver.hpp"
+#include "solver/contact_work.hpp"
 #include "world/world.hpp"
 
 namespace dilatant {
@@ -29,6 +30,7 @@ struct StepReport {
   double kinetic_energy_free = 0.0;  // after prediction, before contacts act
   double kinetic_energy = 0.0;       // at the end of the step
   double max_overlap = 0.0;          // largest overlap at the end of the step
+  ContactWork contact_work;          // exact split of KE(end) - KE(free) by contact kind
 };
 
 class TimeStepper {
@@ -70,6 +72,7 @@ class TimeStepper {
   double dt_;
   ContactDetector detector_;
   std::vector<Contact> contacts_;
+  std::vector<Vec3> free_velocity_, end_velocity_;        // per contact, for contact_work
   std::unordered_map<std::uint64_t, Vec3> last_impulse_;  // world-frame P by contact key
 };
 

@@ -73,6 +73,30 @@ TEST_F(SteadyShear, NoOverlapAboveTolerance) {
   EXPECT_LT(summary_["max_overlap"].get<double>(), 0.01 * 0.8);
 }
 
+// Energy: the drive's power goes into perfectly inelastic impacts, friction and
+// kinetic energy. The split is exact step by step (solver/contact_work.hpp), so
+// the steady averages must balance to round-off, and every loss is a loss.
+TEST_F(SteadyShear, EnergyBudgetCloses) {
+  const double injected = summary_["power_injected"];
+  const double impacts = summary_["power_impacts"], bl = summary_["power_friction_bl"],
+               hd = summary_["power_friction_hd"], kinetic = summary_["power_kinetic"];
+  EXPECT_GT(injected, 0.0);
+  EXPECT_GE(impacts, 0.0);
+  EXPECT_GE(bl, 0.0);
+  EXPECT_GE(hd, 0.0);
+  EXPECT_NEAR(injected, impacts + bl + hd + kinetic, 1e-9 * injected);
+  // Steady state: no net change of kinetic energy within its error bar.
+  EXPECT_NEAR(kinetic, 0.0, 3.0 * summary_["power_kinetic_err"].get<double>());
+  // Hydrodynamic contacts slide persistently: their friction loss is the
+  // force times the sliding speed (to the step's discretisation).
+  EXPECT_NEAR(summary_["power_sliding_hd"].get<double>(), hd,
+              3.0 * summary_["power_friction_hd_err"].get<double>());
+  // The drive's power is tau A <v_wall> (the discrete work differs by O(dt)).
+  EXPECT_NEAR(injected,
+              summary_["applied_force_x"].get<double>() * summary_["wall_velocity"].get<double>(),
+              3.0 * summary_["power_injected_err"].get<double>());
+}
+
 // The bottom wall is fixed: its spheres end exactly where they were built.
 TEST_F(SteadyShear, FixedWallDoesNotDrift) {
   ShearCellGeometry g;
