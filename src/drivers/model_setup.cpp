@@ -13,7 +13,7 @@ FrictionLaw make_friction_law(const FrictionConfig& f, double eta_f) {
 }
 
 SolverSettings make_solver_settings(const SolverConfig& s) {
-  return SolverSettings{s.tolerance, s.max_iterations};
+  return SolverSettings{s.tolerance, s.max_iterations, s.freeze_branches_after};
 }
 
 }  // namespace dilatant

@@ -22,9 +22,9 @@ namespace dilatant {
 namespace {
 
 // Automatic time step (solver.dt = 0): no body may move more than
-// kDisplacement * r_min in one step, neither at its current speed nor, from
-// rest, under the wall's drive: dt = min(c r/v_max, sqrt(2 c r / a_wall)).
-constexpr double kDisplacement = 0.02;
+// c = solver.max_displacement (default 0.02) times r_min in one step, neither at
+// its current speed nor, from rest, under the wall's drive:
+//     dt = min(c r_min / v_max, sqrt(2 c r_min / a_wall)).
 // Jammed: the wall advanced less than kJamStrain of strain within kJamWindow
 // time units (code units R sqrt(rho/tau)); a Newtonian flow at lambda = 0.01
 // still shears ~1e-2 in that time.
@@ -40,8 +40,9 @@ double choose_dt(const Config& config, const World& world) {
     r_min = std::min(r_min, b.radius[i]);
   }
   const SlidingWall& wall = *world.sliding_wall;
-  const double dt_drive = std::sqrt(2.0 * kDisplacement * r_min * wall.mass / wall.drive_force);
-  return v_max > 0.0 ? std::min(dt_drive, kDisplacement * r_min / v_max) : dt_drive;
+  const double c = config.solver.max_displacement;
+  const double dt_drive = std::sqrt(2.0 * c * r_min * wall.mass / wall.drive_force);
+  return v_max > 0.0 ? std::min(dt_drive, c * r_min / v_max) : dt_drive;
 }
 
 double total_kinetic_energy(const World& world) {

@@ -107,6 +107,7 @@ nlohmann::json cell_summary(const Config& config, const ShearCellState& s, doubl
       p.mean > 0.0 ? gdot_code * cell.radius_max * std::sqrt(config.density / p.mean) : 0.0;
   j["viscous_number"] = p.mean > 0.0 ? u.eta_f * gdot_code / p.mean : 0.0;
   j["frac_bl"] = bl.mean;
+  j["frac_bl_err"] = bl.error;
   j["frac_hd"] = 1.0 - bl.mean;
   j["frac_over_slim"] = over.mean;
   j["valid"] = !s.jammed && over.mean <= 0.05 && profile_consistent;

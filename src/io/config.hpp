@@ -55,6 +55,10 @@
 //     tolerance = 1e-6           Gauss-Seidel stops when the relative change
 //                                of all impulses is below it               (0, 1)
 //     max_iterations = 1000      Gauss-Seidel sweeps per step at most      >= 1
+//     max_displacement = 0.02    shear cell with dt = 0: dt keeps every body's move
+//                                per step below this fraction of r_min     (0, 0.5]
+//     freeze_branches_after = 50 sweeps after which each contact keeps its friction
+//                                branch (solver/contact_solver.hpp)        >= 0
 //   [run]
 //     strain = 10.0              shear cell: total strain                  >= 0
 //     time = 0.0                 scene: simulated time (required > 0 there) >= 0
@@ -124,6 +128,8 @@ struct SolverConfig {
   double dt = 0.0;
   double tolerance = 1e-6;
   int max_iterations = 1000;
+  double max_displacement = 0.02;  // automatic dt (cell): largest move per step / r_min
+  int freeze_branches_after = 50;  // sweeps before contacts keep their friction branch
 };
 
 struct RunConfig {

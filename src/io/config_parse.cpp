@@ -203,6 +203,13 @@ Config build(const toml::table& root, std::string source, const std::filesystem:
   check(solver, "max_iterations", iterations,
         iterations >= 1 && iterations <= std::numeric_limits<int>::max(), "must be >= 1");
   c.solver.max_iterations = static_cast<int>(iterations);
+  c.solver.max_displacement = solver.number("max_displacement", c.solver.max_displacement);
+  check(solver, "max_displacement", c.solver.max_displacement,
+        c.solver.max_displacement > 0.0 && c.solver.max_displacement <= 0.5, "must be in (0, 0.5]");
+  const auto freeze = solver.integer("freeze_branches_after", c.solver.freeze_branches_after);
+  check(solver, "freeze_branches_after", freeze,
+        freeze >= 0 && freeze <= std::numeric_limits<int>::max(), "must be >= 0");
+  c.solver.freeze_branches_after = static_cast<int>(freeze);
 
   c.run = read_run(section("run"), has_cell);
   c.source = std::move(source);

@@ -66,7 +66,9 @@ toml::table to_toml(const Config& c) {
   t.insert("fluid", toml::table{{"lambda", c.fluid.lambda}, {"eta_f", c.fluid.eta_f}});
   t.insert("solver", toml::table{{"dt", c.solver.dt},
                                  {"tolerance", c.solver.tolerance},
-                                 {"max_iterations", c.solver.max_iterations}});
+                                 {"max_iterations", c.solver.max_iterations},
+                                 {"max_displacement", c.solver.max_displacement},
+                                 {"freeze_branches_after", c.solver.freeze_branches_after}});
   t.insert("run", toml::table{{"strain", c.run.strain},
                               {"time", c.run.time},
                               {"transient_strain", c.run.transient_strain},
