@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs every Debian package dilatant needs (tested on Debian 12), non-interactively.
-#   scripts/install-deps.sh
+#   scripts/install-deps.sh [extra-package ...]   (e.g. python3-matplotlib for docs figures)
 # Does nothing (no network, no root needed) when all packages are already installed
 # or when DILATANT_SKIP_DEPS=1. Uses sudo when not run as root.
 set -euo pipefail
@@ -12,6 +12,7 @@ packages=(
   python3 python3-numpy python3-vtk9                # post-processing scripts
   clang-format                                      # formatting check (scripts/test.sh)
 )
+packages+=("$@")
 
 if [[ "${DILATANT_SKIP_DEPS:-0}" == 1 ]]; then
   echo "install-deps: DILATANT_SKIP_DEPS=1, skipping"
