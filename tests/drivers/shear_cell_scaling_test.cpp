@@ -1,0 +1,53 @@
+// Bagnold scaling of dry frictional grains: with the `coulomb` law no fluid
+// enters, so the only time scale of the stress-controlled cell is
+// R sqrt(rho_p / tau) and doubling tau must multiply the shear rate by sqrt(2)
+// (stress ~ rho R^2 gdot^2). Small cell; tolerance 3 combined standard errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "drivers/shear_cell_run.hpp"
+#include "io/config.hpp"
+
+namespace dilatant {
+namespace {
+
+nlohmann::json run_coulomb_cell(double tau) {
+  const std::vector<std::string> overrides = {"cell.size=[8.0, 5.0, 9.0]",
+                                              "friction.law=coulomb",
+                                              "friction.mu0=0.1",
+                                              "cell.shear_stress=" + std::to_string(tau),
+                                              "run.strain=5.0",
+                                              "run.transient_strain=2.0",
+                                              "run.output_interval=0.02",
+                                              "run.snapshot_interval=0.0",
+                                              "solver.tolerance=1e-4"};
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("dilatant_bagnold_" + std::to_string(tau) + "_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  run_shear_cell(default_cell_config(overrides),
+                 CellRunOptions{RunOptions{dir, true}, false, nullptr});
+  std::ifstream in(dir / "summary.json");
+  auto summary = nlohmann::json::parse(in);
+  std::filesystem::remove_all(dir);
+  return summary;
+}
+
+TEST(CellScaling, DoublingTheStressMultipliesTheRateBySqrt2) {
+  const auto one = run_coulomb_cell(1.0);
+  const auto two = run_coulomb_cell(2.0);
+  ASSERT_FALSE(one["jammed"].get<bool>());
+  const double v1 = one["wall_velocity"], v2 = two["wall_velocity"];
+  const double e1 = one["wall_velocity_err"], e2 = two["wall_velocity_err"];
+  ASSERT_GT(e1, 0.0);
+  ASSERT_GT(e2, 0.0);
+  const double ratio = v2 / v1;
+  const double ratio_err = ratio * std::hypot(e1 / v1, e2 / v2);
+  EXPECT_NEAR(ratio, std::sqrt(2.0), 3.0 * ratio_err);
+}
+
+}  // namespace
+}  // namespace dilatant
