@@ -131,13 +131,17 @@ void accumulate_step(const Config& config, ShearCellState& s, const StepReport& 
 void show_progress(const Config& config, const ShearCellState& s, double elapsed) {
   const double lz = config.cell->size[2];
   const CellUnits u = cell_units(config);
-  const double gdot = s.rows.empty() ? 0.0 : s.rows.back().wall_velocity / lz;
+  // The wall speed over the current output interval, else the last row's.
+  const double v = s.interval.time > 0.0 ? s.interval.velocity / s.interval.time
+                   : s.rows.empty()      ? s.world.sliding_wall->velocity
+                                         : s.rows.back().wall_velocity;
+  const double gdot = v / lz;
   const double done = s.strain / config.run.strain;
   const double left = done > 0.0 ? elapsed * (1.0 - done) / done : 0.0;
   std::cerr << fmt::format(
-                   "\rstrain {:6.2f}/{:.1f}  gamma_dot {:9.3g}  eta {:9.3g}  left {:4.0f} s ",
+                   "\rstrain {:6.2f}/{:.2f}  gamma_dot {:9.3g}  eta {:9.3g}  left {:5.0f} s ",
                    s.strain, config.run.strain, gdot / u.rate_unit,
-                   gdot > 0.0 ? 1.0 / gdot / u.eta_f : 0.0, left)
+                   gdot > 0.0 ? config.cell->shear_stress / gdot / u.eta_f : 0.0, left)
             << std::flush;
 }
 
