@@ -91,6 +91,16 @@ World build_shear_cell(const Config& config, ShearCellGeometry& geometry) {
   }
   wall.mass = cell.wall_mass > 0.0 ? cell.wall_mass : wall_mass;
   wall.drive_force = cell.shear_stress * lx * ly;
+  // Start sheared: a linear profile has uniform stress, so the flow only has to
+  // adjust its magnitude, which the whole gap does at once, instead of waiting
+  // for momentum to diffuse from a wall that starts alone (several strain units
+  // in the paper's cell).
+  wall.velocity = cell.initial_shear_rate * lz;
+  for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+    if (world.group[i] == BodyGroup::TopWall) world.bodies.velocity[i] = Vec3(wall.velocity, 0, 0);
+    if (world.group[i] != BodyGroup::Particle) continue;
+    world.bodies.velocity[i] = Vec3(cell.initial_shear_rate * world.bodies.position[i][2], 0, 0);
+  }
   world.sliding_wall = wall;
   return world;
 }

@@ -23,6 +23,8 @@
 //                                masses of its glued spheres               >= 0
 //     wall_friction = 1.0        Coulomb friction of particle-wall contacts (the walls
 //                                are rough glued grains; see docs/shear-cell.md)  >= 0
+//     initial_shear_rate = 0.2   start from the linear profile v_x = rate z (wall at
+//                                rate Lz), in sqrt(tau/rho_p)/R; 0 = from rest  >= 0
 //   [scene]                      anything else (validation, teaching)
 //     particles = "p.csv"        required; CSV id,x,y,z,r[,vx,vy,vz,wx,wy,wz,fixed]
 //                                (see io/particles_csv.hpp); a relative path is
@@ -110,6 +112,7 @@ struct CellConfig {
   double shear_stress = 1.0;
   double wall_mass = 0.0;
   double wall_friction = 1.0;
+  double initial_shear_rate = 0.2;
 };
 
 struct FrictionConfig {

@@ -44,6 +44,8 @@ CellConfig read_cell(const Section& s) {
   check(s, "wall_mass", c.wall_mass, c.wall_mass >= 0.0, "must be >= 0 (0 = automatic)");
   c.wall_friction = s.number("wall_friction", c.wall_friction);
   check(s, "wall_friction", c.wall_friction, c.wall_friction >= 0.0, "must be >= 0");
+  c.initial_shear_rate = s.number("initial_shear_rate", c.initial_shear_rate);
+  check(s, "initial_shear_rate", c.initial_shear_rate, c.initial_shear_rate >= 0.0, "must be >= 0");
   return c;
 }
 

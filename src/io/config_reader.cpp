@@ -13,15 +13,16 @@ namespace dilatant::config_detail {
 namespace {
 
 using namespace std::string_view_literals;
-constexpr std::array kCellKeys = {"size"sv, "phi"sv,          "radius_min"sv, "radius_max"sv,
-                                  "seed"sv, "shear_stress"sv, "wall_mass"sv,  "wall_friction"sv};
+constexpr std::array kCellKeys = {"size"sv,       "phi"sv,           "radius_min"sv,
+                                  "radius_max"sv, "seed"sv,          "shear_stress"sv,
+                                  "wall_mass"sv,  "wall_friction"sv, "initial_shear_rate"sv};
 constexpr std::array kSceneKeys = {"particles"sv,           "gravity"sv, "box"sv, "periodic"sv,
                                    "trajectory_interval"sv, "planes"sv};
 constexpr std::array kParticlesKeys = {"density"sv};
 constexpr std::array kFrictionKeys = {"law"sv, "mu0"sv, "s_c"sv, "s_lim"sv};
 constexpr std::array kFluidKeys = {"lambda"sv, "eta_f"sv};
-constexpr std::array kSolverKeys = {"dt"sv, "tolerance"sv, "max_iterations"sv,
-                                    "max_displacement"sv, "freeze_branches_after"sv};
+constexpr std::array kSolverKeys = {"dt"sv, "tolerance"sv, "max_iterations"sv, "max_displacement"sv,
+                                    "freeze_branches_after"sv};
 constexpr std::array kRunKeys = {"strain"sv,
                                  "time"sv,
                                  "transient_strain"sv,

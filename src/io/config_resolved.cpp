@@ -43,7 +43,8 @@ toml::table to_toml(const Config& c) {
                                  {"seed", cell.seed},
                                  {"shear_stress", cell.shear_stress},
                                  {"wall_mass", cell.wall_mass},
-                                 {"wall_friction", cell.wall_friction}});
+                                 {"wall_friction", cell.wall_friction},
+                                 {"initial_shear_rate", cell.initial_shear_rate}});
   }
   if (c.scene) {
     const auto& scene = *c.scene;
