@@ -1,15 +1,22 @@
 #!/usr/bin/env bash
-# Regenerates the figures and table of docs/shear-cell.md: runs the two committed
-# configs (examples/cell/viscous.toml, thickened.toml) at the paper's cell size,
-# in parallel (about 10-20 minutes each on one core of the 2-core machine), then
-# draws the figures into docs/shear-cell/.
+# Regenerates the figures and tables of docs/shear-cell.md from committed configs:
+#  1. two points of the paper's Fig. 1 (examples/cell/viscous.toml, thickened.toml);
+#  2. the wall-grip check: thickened.toml at mu0 = 0.2, 0.3, 0.4 (5 strain units).
+# About 30 minutes on the 2-core machine. Outputs: out/docs/, docs/shear-cell/.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 bash scripts/install-deps.sh python3-matplotlib
 bash scripts/build.sh release
-./build/dilatant run examples/cell/viscous.toml --out out/docs/viscous --quiet &
-./build/dilatant run examples/cell/thickened.toml --out out/docs/thickened --quiet &
+run() { ./build/dilatant run --quiet "$@"; }
+run examples/cell/viscous.toml --out out/docs/viscous &
+run examples/cell/thickened.toml --out out/docs/thickened
+for mu in 0.2 0.3 0.4; do
+  run examples/cell/thickened.toml --set friction.mu0=$mu --set run.strain=5.0 \
+    --set run.transient_strain=2.0 --out out/docs/mu$mu
+done
 wait
-/usr/bin/python3 scripts/shear_cell_figures.py docs/shear-cell \
+/usr/bin/python3 scripts/shear_cell_figures.py docs/shear-cell/fig1 \
   "lambda 1=out/docs/viscous" "lambda 100=out/docs/thickened"
-git rev-parse --short HEAD > docs/shear-cell/commit.txt 2>/dev/null || true
+/usr/bin/python3 scripts/shear_cell_figures.py docs/shear-cell/walls \
+  "mu0 0.1=out/docs/thickened" "mu0 0.2=out/docs/mu0.2" "mu0 0.3=out/docs/mu0.3" \
+  "mu0 0.4=out/docs/mu0.4"

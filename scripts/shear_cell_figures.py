@@ -54,13 +54,15 @@ def main():
              "beyond s_lim | phi | phi_bulk | I | valid | strain | steps | wall time |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     mu0 = s_c = s_lim = None
+    versions = set()
     for label, folder in runs:
         folder = Path(folder)
         summary = json.loads((folder / "summary.json").read_text())
         lz = float(read_toml_value(folder / "config.toml", "cell", "size").strip("[]").split(",")[2])
         prof = read_csv(folder / "velocity_profile.csv")
         v_wall = summary.get("wall_velocity", summary["gamma_dot"] / summary["lambda"] * lz)
-        ax_p.plot(prof["vx"] / v_wall, prof["z"] / lz, "o-", ms=3, label=label)
+        if not summary["jammed"] and v_wall > 0:
+            ax_p.plot(prof["vx"] / v_wall, prof["z"] / lz, "o-", ms=3, label=label)
         hist = read_csv(folder / "sommerfeld_hist.csv")
         sliding = hist["s_high"] > 0
         lo, hi = hist["s_low"][sliding], hist["s_high"][sliding]
@@ -71,11 +73,13 @@ def main():
         ts = read_csv(folder / "timeseries.csv")
         ax_t.plot(ts["strain"], ts["gamma_dot"] * summary["lambda"], lw=0.8, label=label)
         mu0, s_c, s_lim = summary["mu0"], summary["s_c"], summary["s_lim"]
+        versions.add(summary["version"])
         f = lambda key, d=3: f"{summary[key]:.{d}g}"  # noqa: E731
         table.append(
             f"| {label} | {f('lambda')} | {f('gamma_dot')} ± {summary['gamma_dot_err']:.2g} | "
             f"{summary.get('gamma_dot_gap', math.nan):.3g} | {f('gamma_dot_bulk')} | "
-            f"{summary['eta']:.3g} ± {summary['eta_err']:.2g} | {f('frac_bl')} | "
+            + (f"{summary['eta']:.3g} ± {summary['eta_err']:.2g}" if not summary["jammed"]
+               else "jammed") + f" | {f('frac_bl')} | "
             f"{f('frac_over_slim')} | {f('phi', 4)} | {f('phi_bulk', 4)} | "
             f"{f('inertial_number')} | {summary['valid']} | {f('strain')} | {summary['steps']} | "
             f"{summary['wall_time_s']:.0f} s |")
@@ -104,6 +108,9 @@ def main():
     for name, fig in (("profiles", fig_p), ("sommerfeld", fig_s), ("timeseries", fig_t)):
         fig.savefig(out / f"{name}.png", dpi=130)
         fig.savefig(out / f"{name}.svg")
+    table.append("")
+    table.append(f"Made by dilatant {', '.join(sorted(versions))}; the settings of each run are "
+                 "its config.toml (see scripts/docs-shear-cell.sh).")
     (out / "table.md").write_text("\n".join(table) + "\n")
 
 
