@@ -36,6 +36,15 @@ CLI::App* add_run_command(CLI::App& app, RunCommandArgs& args) {
 namespace {
 
 std::atomic<bool> g_stop_requested{false};
+
+// A run whose solver did not converge says so, never silently.
+void warn_if_unconverged(const Config& config, long steps, long unconverged) {
+  if (unconverged == 0) return;
+  std::cerr << fmt::format(
+      "dilatant: warning: {} of {} steps did not converge within solver.max_iterations = {} "
+      "(see timeseries.csv, summary.json)\n",
+      unconverged, steps, config.solver.max_iterations);
+}
 extern "C" void request_stop(int) { g_stop_requested.store(true); }
 
 int run_cell(const Config& config, const RunOptions& options, bool resume) {
@@ -51,12 +60,7 @@ int run_cell(const Config& config, const RunOptions& options, bool resume) {
         (options.out_dir / "checkpoint.bin").string());
     return 1;
   }
-  if (outcome.unconverged_steps > 0) {
-    std::cerr << fmt::format(
-        "dilatant: warning: {} of {} steps did not converge within solver.max_iterations = {} "
-        "(see timeseries.csv, summary.json)\n",
-        outcome.unconverged_steps, outcome.steps, config.solver.max_iterations);
-  }
+  warn_if_unconverged(config, outcome.steps, outcome.unconverged_steps);
   if (!options.quiet) {
     std::cout << fmt::format("dilatant: {} steps{}; results in {}\n", outcome.steps,
                              outcome.jammed ? " (the cell jammed)" : "", options.out_dir.string());
@@ -79,12 +83,7 @@ int execute_run_command(const RunCommandArgs& args) {
           : std::filesystem::path(args.out);
   if (config.cell) return run_cell(config, options, args.resume);
   const SceneOutcome outcome = run_scene(config, options);
-  if (outcome.unconverged_steps > 0) {
-    std::cerr << fmt::format(
-        "dilatant: warning: {} of {} steps did not converge within solver.max_iterations = {} "
-        "(see timeseries.csv, summary.json)\n",
-        outcome.unconverged_steps, outcome.steps, config.solver.max_iterations);
-  }
+  warn_if_unconverged(config, outcome.steps, outcome.unconverged_steps);
   if (!args.quiet) {
     std::cout << fmt::format("dilatant: {} steps done; results in {}\n", outcome.steps,
                              options.out_dir.string());

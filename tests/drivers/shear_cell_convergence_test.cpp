@@ -15,8 +15,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
-#include "drivers/shear_cell_run.hpp"
-#include "io/config.hpp"
+#include "drivers/cell_run_helpers.hpp"
 
 namespace dilatant {
 namespace {
@@ -30,14 +29,7 @@ nlohmann::json run_small_cell(const std::string& name, const std::vector<std::st
       "run.transient_strain=2.0",  "run.output_interval=0.02", "run.snapshot_interval=0.0",
       "solver.tolerance=1e-4"};
   overrides.insert(overrides.end(), extra.begin(), extra.end());
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("dilatant_conv_" + name + "_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  run_shear_cell(default_cell_config(overrides),
-                 CellRunOptions{RunOptions{dir, true}, false, nullptr});
-  std::ifstream in(dir / "summary.json");
-  auto summary = nlohmann::json::parse(in);
-  std::filesystem::remove_all(dir);
+  const auto summary = testing::run_cell_summary("conv_" + name, overrides);
   cache[name] = summary;
   return summary;
 }

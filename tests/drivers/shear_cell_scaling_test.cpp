@@ -9,8 +9,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "drivers/shear_cell_run.hpp"
-#include "io/config.hpp"
+#include "drivers/cell_run_helpers.hpp"
 
 namespace dilatant {
 namespace {
@@ -25,14 +24,7 @@ nlohmann::json run_coulomb_cell(double tau) {
                                               "run.output_interval=0.02",
                                               "run.snapshot_interval=0.0",
                                               "solver.tolerance=1e-4"};
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("dilatant_bagnold_" + std::to_string(tau) + "_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  run_shear_cell(default_cell_config(overrides),
-                 CellRunOptions{RunOptions{dir, true}, false, nullptr});
-  std::ifstream in(dir / "summary.json");
-  auto summary = nlohmann::json::parse(in);
-  std::filesystem::remove_all(dir);
+  const auto summary = testing::run_cell_summary("bagnold_" + std::to_string(tau), overrides);
   return summary;
 }
 
