@@ -15,6 +15,12 @@ for mu in 0.2 0.3 0.4; do
     --set run.transient_strain=2.0 --out out/docs/mu$mu
 done
 wait
+# The small result files of every run are committed next to the figures.
+for run in viscous thickened mu0.2 mu0.3 mu0.4; do
+  mkdir -p docs/shear-cell/data/$run
+  cp out/docs/$run/{summary.json,config.toml,timeseries.csv,velocity_profile.csv,sommerfeld_hist.csv} \
+    docs/shear-cell/data/$run/
+done
 /usr/bin/python3 scripts/shear_cell_figures.py docs/shear-cell/fig1 \
   "lambda 1=out/docs/viscous" "lambda 100=out/docs/thickened"
 /usr/bin/python3 scripts/shear_cell_figures.py docs/shear-cell/walls \
