@@ -158,6 +158,13 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
   ShearCellState s = options.resume && std::filesystem::exists(checkpoint)
                          ? load_checkpoint(checkpoint)
                          : initial_state(config);
+  CellOutcome outcome;
+  if (options.resume && (s.strain >= config.run.strain || s.jammed)) {
+    // Nothing left to run: keep the finished run's files as they are.
+    outcome.steps = s.steps;
+    outcome.jammed = s.jammed;
+    return outcome;
+  }
   write_file_atomically(out / "config.toml", resolved_toml(config));
   const CellUnits units = cell_units(config);
   TimeStepper stepper(make_friction_law(config.friction, units.eta_f),
@@ -167,7 +174,6 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
 
   const bool progress = !options.run.quiet && isatty(STDERR_FILENO);
   auto last_progress = std::chrono::steady_clock::now();
-  CellOutcome outcome;
   while (s.strain < config.run.strain && !s.jammed) {
     s.dt = choose_dt(config, s.world);
     stepper.set_dt(s.dt);

@@ -107,6 +107,10 @@ TEST(ShearCellRun, ResumeEqualsUninterruptedRunBitForBit) {
                         "sommerfeld_hist.csv", "checkpoint.bin", "cell.pvd"}) {
     EXPECT_EQ(read(whole / f), read(pieces / f)) << f;
   }
+  // Resuming a finished run changes nothing.
+  const std::string contacts = read(pieces / "contacts.csv");
+  run_shear_cell(config, CellRunOptions{RunOptions{pieces, true}, true, nullptr});
+  EXPECT_EQ(read(pieces / "contacts.csv"), contacts);
   std::filesystem::remove_all(whole);
   std::filesystem::remove_all(pieces);
 }
