@@ -13,10 +13,11 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <numbers>
-#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "io/io_test_files.hpp"
 
 namespace dilatant {
 namespace {
@@ -110,36 +111,14 @@ struct RunResult {
   std::string err;
 };
 
-class TempDir {
+// A private temporary directory (tests/io/io_test_files.hpp) that can also run
+// the executable inside it.
+class TempDir : public test::TempDir {
  public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::string name = info ? std::string(info->test_suite_name()) + "_" + info->name() : "cli";
-    for (auto& c : name)
-      if (c == '/') c = '_';
-    path_ = fs::temp_directory_path() /
-            ("dilatant_cli_" + name + "_" + std::to_string(std::random_device{}()));
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  const fs::path& path() const { return path_; }
-
-  fs::path write(const std::string& name, const std::string& text) const {
-    const fs::path file = path_ / name;
-    std::ofstream(file, std::ios::binary) << text;
-    return file;
-  }
-
   // Runs the dilatant executable with `args`; stdout and stderr are captured.
   RunResult run(const std::vector<std::string>& args) const {
-    const fs::path out = path_ / "stdout.txt";
-    const fs::path err = path_ / "stderr.txt";
+    const fs::path out = path() / "stdout.txt";
+    const fs::path err = path() / "stderr.txt";
     std::string command = shell_quote(DILATANT_EXECUTABLE);
     for (const auto& a : args) command.append(" ").append(shell_quote(a));
     command.append(" >").append(shell_quote(out.string()));
@@ -154,9 +133,6 @@ class TempDir {
     fs::remove(err);
     return r;
   }
-
- private:
-  fs::path path_;
 };
 
 std::vector<fs::path> part_files(const fs::path& dir) {
