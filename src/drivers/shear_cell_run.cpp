@@ -108,9 +108,13 @@ void accumulate_step(const Config& config, ShearCellState& s, const StepReport& 
   a.velocity += s.world.sliding_wall->velocity * dt;
   a.kinetic_energy += report.kinetic_energy * dt;
   a.contacts += double(report.contacts_closed) * dt;
-  a.closed += n.closed;
-  a.boundary += n.boundary;
-  a.over_s_lim += n.over_s_lim;
+  // Contact fractions are time averages: with the adaptive step, a plain count
+  // per step would over-weight the fast (short-step) phases of the flow.
+  a.closed += n.closed * dt;
+  a.boundary += n.boundary * dt;
+  a.over_s_lim += n.over_s_lim * dt;
+  a.impulsive += n.impulsive * dt;
+  a.impulsive_boundary += n.impulsive_boundary * dt;
   a.normal_stress += 0.5 * (f.top[2] - f.bottom[2]) / area * dt;
   a.bottom_force_x += f.bottom[0] * dt;
   a.top_force_z += f.top[2] * dt;
@@ -170,7 +174,7 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
   TimeStepper stepper(make_friction_law(config.friction, units.eta_f),
                       make_solver_settings(config.solver), s.dt > 0.0 ? s.dt : 1.0);
   stepper.set_wall_law(CoulombLaw{cell.wall_friction, units.eta_f});
-  stepper.restore_warm_start(s.warm_start);
+  stepper.restore_contact_memory(s.contact_memory);
 
   const bool progress = !options.run.quiet && isatty(STDERR_FILENO);
   auto last_progress = std::chrono::steady_clock::now();
@@ -207,7 +211,7 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
     }
     const bool stop = options.stop_requested != nullptr && options.stop_requested->load();
     if (s.strain >= s.next_checkpoint_strain || stop) {
-      s.warm_start = stepper.warm_start_impulses();
+      s.contact_memory = stepper.contact_memory();
       save_checkpoint(checkpoint, s);
       write_series(out, s, lz);
       while (s.next_checkpoint_strain <= s.strain)
@@ -231,7 +235,7 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
     s.rows.push_back(s.interval.close(s.world.time, s.strain));
     s.interval = IntervalSums{};
   }
-  s.warm_start = stepper.warm_start_impulses();
+  s.contact_memory = stepper.contact_memory();
   save_checkpoint(checkpoint, s);
   write_series(out, s, lz);
   write_file_atomically(out / "velocity_profile.csv", s.profile.csv());

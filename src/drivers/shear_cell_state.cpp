@@ -11,7 +11,7 @@ namespace dilatant {
 
 namespace {
 
-constexpr std::uint64_t kMagic = 0x31544e54414c4944ULL;  // "DILATNT1"
+constexpr std::uint64_t kMagic = 0x32544e54414c4944ULL;  // "DILATNT2": contact memory with regime
 
 // One function serves both directions so the field order cannot diverge.
 template <class Archive, class State>
@@ -67,15 +67,17 @@ void save_checkpoint(const std::filesystem::path& file, const ShearCellState& st
   w.value(kMagic);
   // visit_state needs mutable access for the reader; the writer only reads.
   visit_state(w, const_cast<ShearCellState&>(state));
-  // Warm-start impulses, sorted by key so the file is reproducible.
-  std::vector<std::pair<std::uint64_t, Vec3>> impulses(state.warm_start.begin(),
-                                                       state.warm_start.end());
-  std::sort(impulses.begin(), impulses.end(),
+  // Contact memory (warm-start impulses and regimes), sorted by key so the file
+  // is reproducible.
+  std::vector<std::pair<std::uint64_t, ContactMemory>> memory(state.contact_memory.begin(),
+                                                              state.contact_memory.end());
+  std::sort(memory.begin(), memory.end(),
             [](const auto& x, const auto& y) { return x.first < y.first; });
-  w.value(static_cast<std::uint64_t>(impulses.size()));
-  for (const auto& [key, p] : impulses) {
+  w.value(static_cast<std::uint64_t>(memory.size()));
+  for (const auto& [key, m] : memory) {
     w.value(key);
-    w.value(p);
+    w.value(m.impulse);
+    w.value(static_cast<std::uint8_t>(m.regime));
   }
   write_file_atomically(file, w.bytes());
 }
@@ -96,10 +98,16 @@ ShearCellState load_checkpoint(const std::filesystem::path& file) {
   r.value(n);
   for (std::uint64_t k = 0; k < n; ++k) {
     std::uint64_t key = 0;
-    Vec3 p;
+    ContactMemory m;
+    std::uint8_t regime = 0;
     r.value(key);
-    r.value(p);
-    s.warm_start.emplace(key, p);
+    r.value(m.impulse);
+    r.value(regime);
+    if (regime > static_cast<std::uint8_t>(Regime::Hydrodynamic)) {
+      throw std::runtime_error(file.string() + ": corrupt checkpoint (contact regime)");
+    }
+    m.regime = static_cast<Regime>(regime);
+    s.contact_memory.emplace(key, m);
   }
   if (!r.at_end()) throw std::runtime_error(file.string() + ": checkpoint has trailing data");
   return s;

@@ -11,6 +11,7 @@
 #include "measure/contact_statistics.hpp"
 #include "measure/flow_series.hpp"
 #include "measure/velocity_profile.hpp"
+#include "solver/contact.hpp"
 #include "world/world.hpp"
 
 namespace dilatant {
@@ -19,7 +20,7 @@ struct ShearCellState {
   World world;
   ShearCellGeometry geometry;
   double dt = 0.0;
-  std::unordered_map<std::uint64_t, Vec3> warm_start;
+  std::unordered_map<std::uint64_t, ContactMemory> contact_memory;
 
   long steps = 0;
   double strain = 0.0;

@@ -108,6 +108,13 @@ nlohmann::json cell_summary(const Config& config, const ShearCellState& s, doubl
   j["viscous_number"] = p.mean > 0.0 ? u.eta_f * gdot_code / p.mean : 0.0;
   j["frac_bl"] = bl.mean;
   j["frac_bl_err"] = bl.error;
+  const auto impulsive =
+      steady_average(s.rows, from, [](const FlowRow& r) { return r.frac_impulsive; });
+  const auto bl_persistent =
+      steady_average(s.rows, from, [](const FlowRow& r) { return r.frac_bl_persistent; });
+  j["frac_impulsive"] = impulsive.mean;
+  j["frac_bl_persistent"] = bl_persistent.mean;
+  j["frac_bl_persistent_err"] = bl_persistent.error;
   j["frac_hd"] = 1.0 - bl.mean;
   j["frac_over_slim"] = over.mean;
   j["valid"] = !s.jammed && over.mean <= 0.05 && profile_consistent;

@@ -64,6 +64,12 @@ TangentialSolution StribeckLaw::solve(const TangentialProblem& p) const {
     out.regime = regime;
     return out;
   };
+  const double v_c = s_c / k;
+  // An HD answer with s >= s_c exists when f(v_c) < 0 (see the header).
+  const bool hd_above_jump = v_c + w * p.normal_impulse * hydrodynamic_mu(s_c) < p.free_slip;
+  if (p.branch == FrictionBranch::KeepHydrodynamic && hd_above_jump) {
+    return sliding(hydrodynamic_root(p, k, v_c), Regime::Hydrodynamic);
+  }
   if (p.branch != FrictionBranch::Hydrodynamic) {
     // Branch 1: stick inside the mu0 cone.
     if (p.free_slip <= w * cone) {
@@ -82,8 +88,7 @@ TangentialSolution StribeckLaw::solve(const TangentialProblem& p) const {
     return sliding(hydrodynamic_root(p, k, 0.0), Regime::Hydrodynamic);
   }
   // Branch 3: hydrodynamic sliding above s_c.
-  const double v_c = s_c / k;
-  if (v_c + w * p.normal_impulse * hydrodynamic_mu(s_c) >= p.free_slip) {
+  if (!hd_above_jump) {
     // mu_HD(s_c) > mu0 (a tiny mu0): neither branch is consistent, the solution
     // sits on the jump itself, sliding at s = s_c with a friction between mu0
     // and mu_HD(s_c) -- the set-valued law's only answer.

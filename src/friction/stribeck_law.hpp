@@ -22,6 +22,17 @@
 //  A solver may impose the branch (TangentialProblem::branch): Boundary skips the
 //  s < s_c test of step 2, Hydrodynamic solves step 3 on the whole HD curve
 //  (v_s from 0). See solver/contact_solver.hpp for why.
+//
+//  Continuity of the HD branch in time (KeepHydrodynamic). Rule 1 alone lets a
+//  contact that slides on the HD branch stick at once whenever mu0 N dt could
+//  stop it within the step, i.e. whenever v_s < mu0 N w_t dt, although in the
+//  continuous dynamics it slides on with the weak HD friction until its speed
+//  falls to v_c = s_c N/(eta_f R_p). With dt above the BL stopping time
+//  s_c/(mu0 eta_f R_p w_t) (~2e-4 lambda in the shear cell) this captures HD
+//  contacts in proportion to dt: P_BL was first order in dt (docs/shear-cell.md).
+//  So a contact that slid on the HD branch in the previous step stays on it while
+//  an HD answer with s >= s_c exists; only when its speed would fall below v_c
+//  does rule 1-3 decide. Both rules have the same dt -> 0 limit.
 //  The paper's HD formula needs s_c < 5/(6 pi) for mu > 0; the config checks it.
 #include "friction/tangential_problem.hpp"
 

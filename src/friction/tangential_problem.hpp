@@ -14,8 +14,10 @@
 namespace dilatant {
 
 // Which branch of a velocity-dependent law the solver imposes (Any: the law's
-// own deterministic rule).
-enum class FrictionBranch : std::uint8_t { Any, Boundary, Hydrodynamic };
+// own deterministic rule). KeepHydrodynamic: the contact slid on the HD branch
+// in the previous step; it stays there while an HD answer with s >= s_c exists
+// (see friction/stribeck_law.hpp for why), else the law's own rule applies.
+enum class FrictionBranch : std::uint8_t { Any, Boundary, Hydrodynamic, KeepHydrodynamic };
 
 struct TangentialProblem {
   double free_slip = 0.0;       // |u_t_free|, sliding speed without friction impulse

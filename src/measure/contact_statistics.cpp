@@ -43,6 +43,12 @@ ContactCounts count_contacts(const World& world, const std::vector<Contact>& con
       n.sliding_power_hd += power;
     }
     if (c.sommerfeld >= s_lim) n.over_s_lim += 1.0;
+    if (c.previous_regime == Regime::Open) {
+      n.impulsive += 1.0;
+      if (c.regime == Regime::Stick || c.regime == Regime::BoundaryLubricated) {
+        n.impulsive_boundary += 1.0;
+      }
+    }
     if (histogram != nullptr) histogram->add(c.regime == Regime::Stick ? 0.0 : c.sommerfeld);
   }
   return n;

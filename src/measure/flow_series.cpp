@@ -29,6 +29,9 @@ FlowRow IntervalSums::close(double t, double strain) const {
   r.contacts = contacts / time;
   r.frac_bl = closed > 0.0 ? boundary / closed : 0.0;
   r.frac_over_slim = closed > 0.0 ? over_s_lim / closed : 0.0;
+  r.frac_impulsive = closed > 0.0 ? impulsive / closed : 0.0;
+  r.frac_bl_persistent =
+      closed > impulsive ? (boundary - impulsive_boundary) / (closed - impulsive) : 0.0;
   r.normal_stress = normal_stress / time;
   r.bottom_force_x = bottom_force_x / time;
   r.top_force_z = top_force_z / time;

@@ -17,6 +17,9 @@ struct FlowRow {
   double t = 0.0, strain = 0.0, duration = 0.0;
   double wall_velocity = 0.0;  // time average over the interval
   double kinetic_energy = 0.0, contacts = 0.0, frac_bl = 0.0, frac_over_slim = 0.0;
+  // Impulsive contacts (closed within the step) among the closed ones, and the
+  // BL fraction of the persistent ones alone, whose s does not depend on dt.
+  double frac_impulsive = 0.0, frac_bl_persistent = 0.0;
   double normal_stress = 0.0;   // mean of the walls' z forces / (Lx Ly), compressive > 0
   double bottom_force_x = 0.0;  // x force on the fixed wall
   double top_force_z = 0.0, bottom_force_z = 0.0;
@@ -37,7 +40,8 @@ std::string flow_csv_row(const FlowRow& row, double lz);
 // Sums of one output interval.
 struct IntervalSums {
   double time = 0.0, velocity = 0.0, kinetic_energy = 0.0, contacts = 0.0;
-  double closed = 0.0, boundary = 0.0, over_s_lim = 0.0;
+  double closed = 0.0, boundary = 0.0, over_s_lim = 0.0;  // time-weighted counts
+  double impulsive = 0.0, impulsive_boundary = 0.0;
   double normal_stress = 0.0, bottom_force_x = 0.0, top_force_z = 0.0, bottom_force_z = 0.0;
   double sliding_bl = 0.0, sliding_hd = 0.0;
   double iterations = 0.0, max_residual = 0.0, steps = 0.0, unconverged = 0.0;

@@ -28,9 +28,19 @@ struct Contact {
   double sliding_speed = 0.0;
   double sommerfeld = 0.0;
   Regime regime = Regime::Open;
+  // Regime at the end of the previous step (Open for a new contact): the HD
+  // branch is kept from step to step while it exists (friction/stribeck_law.hpp).
+  Regime previous_regime = Regime::Open;
 
   bool with_plane() const { return other < 0; }
   int plane_index() const { return -other - 1; }
+};
+
+// What a contact carries to the next step: its world-frame impulse (warm start)
+// and its friction regime.
+struct ContactMemory {
+  Vec3 impulse = Vec3::Zero();
+  Regime regime = Regime::Open;
 };
 
 // Identity of a contact across steps, for warm starting.

@@ -20,9 +20,14 @@ inline void apply_impulse(const Contact& c, const Vec3& dp, Bodies& b) {
   }
 }
 
-// The branch a contact keeps once branches are frozen: the one it took last.
-inline FrictionBranch frozen_branch(Regime r) {
-  switch (r) {
+// The branch imposed on a contact: once branches are frozen, the one it took in
+// the last sweep; before, the HD branch if it slid on it in the previous step.
+inline FrictionBranch imposed_branch(const Contact& c, bool frozen) {
+  if (!frozen) {
+    return c.previous_regime == Regime::Hydrodynamic ? FrictionBranch::KeepHydrodynamic
+                                                     : FrictionBranch::Any;
+  }
+  switch (c.regime) {
     case Regime::Stick:
     case Regime::BoundaryLubricated:
       return FrictionBranch::Boundary;
@@ -48,9 +53,8 @@ SweepChange sweep(std::span<Contact> contacts, Bodies& b, const Law& law, double
 
     const double p_n = std::max(0.0, -(u_n_free + c.gap * inv_dt) / c.w_n);
     const double free_slip = u_t_free.norm();
-    const TangentialSolution t = law.solve(
-        TangentialProblem{free_slip, c.w_t, p_n, dt, c.reduced_radius,
-                          freeze_branches ? frozen_branch(c.regime) : FrictionBranch::Any});
+    const TangentialSolution t = law.solve(TangentialProblem{
+        free_slip, c.w_t, p_n, dt, c.reduced_radius, imposed_branch(c, freeze_branches)});
     const Vec3 p_t = free_slip > 0.0 ? Vec3((-t.impulse / free_slip) * u_t_free) : Vec3::Zero();
 
     const Vec3 dp = (p_n - c.p_n) * c.normal + (p_t - c.p_t);

@@ -19,11 +19,12 @@ double TimeStepper::detection_margin(const World& world) const {
 
 void TimeStepper::warm_start(Bodies& bodies) {
   for (Contact& c : contacts_) {
-    const auto it = last_impulse_.find(contact_key(c));
-    if (it == last_impulse_.end()) continue;
+    const auto it = memory_.find(contact_key(c));
+    if (it == memory_.end()) continue;
     // The normal may have turned since the last step: keep the part of the old
     // impulse that is still compressive, and its tangential part in the new plane.
-    const Vec3& p = it->second;
+    const Vec3& p = it->second.impulse;
+    c.previous_regime = it->second.regime;
     c.p_n = std::max(0.0, p.dot(c.normal));
     c.p_t = p - p.dot(c.normal) * c.normal;
   }
@@ -110,10 +111,10 @@ StepReport TimeStepper::step(World& world) {
   }
 
   // 5. store impulses of the contacts that carry load
-  last_impulse_.clear();
+  memory_.clear();
   for (const Contact& c : contacts_) {
     if (c.p_n <= 0.0) continue;
-    last_impulse_.emplace(contact_key(c), c.p_n * c.normal + c.p_t);
+    memory_.emplace(contact_key(c), ContactMemory{c.p_n * c.normal + c.p_t, c.regime});
     ++report.contacts_closed;
   }
   report.contacts_detected = contacts_.size();

@@ -50,12 +50,11 @@ class TimeStepper {
   // Contacts [wall_begin(), end) of contacts() touch a wall sphere.
   std::size_t wall_begin() const { return wall_begin_; }
 
-  // Warm-start memory (world-frame impulse by contact key), for checkpoints.
-  const std::unordered_map<std::uint64_t, Vec3>& warm_start_impulses() const {
-    return last_impulse_;
-  }
-  void restore_warm_start(std::unordered_map<std::uint64_t, Vec3> impulses) {
-    last_impulse_ = std::move(impulses);
+  // What the contacts of the last step pass to the next (by contact key), for
+  // checkpoints.
+  const std::unordered_map<std::uint64_t, ContactMemory>& contact_memory() const { return memory_; }
+  void restore_contact_memory(std::unordered_map<std::uint64_t, ContactMemory> memory) {
+    memory_ = std::move(memory);
   }
 
  private:
@@ -72,8 +71,8 @@ class TimeStepper {
   double dt_;
   ContactDetector detector_;
   std::vector<Contact> contacts_;
-  std::vector<Vec3> free_velocity_, end_velocity_;        // per contact, for contact_work
-  std::unordered_map<std::uint64_t, Vec3> last_impulse_;  // world-frame P by contact key
+  std::vector<Vec3> free_velocity_, end_velocity_;           // per contact, for contact_work
+  std::unordered_map<std::uint64_t, ContactMemory> memory_;  // by contact key
 };
 
 }  // namespace dilatant

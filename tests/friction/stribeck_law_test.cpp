@@ -152,6 +152,35 @@ TEST(StribeckSolve, PrefersBoundaryBranchWhenBothAreConsistent) {
   EXPECT_NEAR(s.sliding_speed, 0.0115, 4 * kEps * 0.022);
 }
 
+// A contact that slid on the HD branch in the previous step
+// (FrictionBranch::KeepHydrodynamic) keeps sliding on it while an HD answer
+// with s >= s_c exists, even where rule 1 would stop it: eta_f = 0.1 (k = 0.2,
+// v_c = 2.5e-4), free slip 0.005 lies inside the mu0 cone (0.0105), yet
+// f(v_c) = 2.5e-4 + 0.035 mu_HD(s_c) - 0.005 < 0.
+TEST(StribeckSolve, KeepsTheHydrodynamicBranchWhileItExists) {
+  const StribeckLaw l = law(0.1);
+  TangentialProblem p = problem(0.005);
+  ASSERT_EQ(l.solve(p).regime, Regime::Stick);  // without memory: rule 1
+  p.branch = FrictionBranch::KeepHydrodynamic;
+  const TangentialSolution s = l.solve(p);
+  expect_hd_root(l, p, s);
+  EXPECT_GT(s.sliding_speed, 0.0);
+}
+
+// ... and falls back to rules 1-3 once the HD branch no longer exists: with
+// eta_f = 1e-3 (k = 2e-3, v_c = 0.025) no HD answer with s >= s_c exists for a
+// free slip of 0.02 < v_c, so the contact takes rule 2 (BL) as without memory.
+TEST(StribeckSolve, LeavesTheHydrodynamicBranchBelowTheJump) {
+  const StribeckLaw l = law(1e-3);
+  TangentialProblem p = problem(0.02);
+  p.branch = FrictionBranch::KeepHydrodynamic;
+  const TangentialSolution s = l.solve(p);
+  EXPECT_EQ(s.regime, Regime::BoundaryLubricated);
+  EXPECT_NEAR(s.sliding_speed, 0.0095, 4 * kEps * 0.02);
+  p.free_slip = 0.005;  // and sticks where the cone holds it
+  EXPECT_EQ(l.solve(p).regime, Regime::Stick);
+}
+
 TEST(StribeckSolve, OpenContactCarriesNoFriction) {
   TangentialProblem p = problem(0.02);
   p.normal_impulse = 0.0;
