@@ -1,5 +1,8 @@
 #include "drivers/model_setup.hpp"
 
+#include <algorithm>
+#include <thread>
+
 namespace dilatant {
 
 FrictionLaw make_friction_law(const FrictionConfig& f, double eta_f) {
@@ -13,7 +16,9 @@ FrictionLaw make_friction_law(const FrictionConfig& f, double eta_f) {
 }
 
 SolverSettings make_solver_settings(const SolverConfig& s) {
-  return SolverSettings{s.tolerance, s.max_iterations, s.freeze_branches_after};
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  return SolverSettings{s.tolerance, s.max_iterations, s.freeze_branches_after,
+                        s.threads > 0 ? s.threads : cores};
 }
 
 }  // namespace dilatant

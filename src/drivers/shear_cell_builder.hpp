@@ -12,6 +12,7 @@
 // Safety planes at z = 0 and z = Lz (facing inwards) keep a sphere from
 // slipping through a hole between glued wall spheres.
 #include <cstddef>
+#include <cstdint>
 
 #include "io/config.hpp"
 #include "world/world.hpp"
@@ -22,9 +23,9 @@ struct ShearCellGeometry {
   std::size_t mobile_count = 0;
   std::size_t first_mobile = 0;  // bodies [first_mobile, end) are mobile
   double wall_radius_mean = 0.0;
-  double phi = 0.0;         // V_mobile / (Lx Ly (Lz - 2 r_w)), as realised
-  double gap_height = 0.0;  // Lz - 2 r_w, between the walls' mean surfaces
-  int growth_steps = 0;
+  double phi = 0.0;               // V_mobile / (Lx Ly (Lz - 2 r_w)), as realised
+  double gap_height = 0.0;        // Lz - 2 r_w, between the walls' mean surfaces
+  std::int64_t growth_steps = 0;  // 64-bit: no padding in the checkpoint's raw bytes
   double max_overlap = 0.0;
 };
 

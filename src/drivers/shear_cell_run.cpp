@@ -45,6 +45,10 @@ double choose_dt(const Config& config, const World& world) {
   return v_max > 0.0 ? std::min(dt_drive, c * r_min / v_max) : dt_drive;
 }
 
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 double total_kinetic_energy(const World& world) {
   const SlidingWall& wall = *world.sliding_wall;
   return world.bodies.kinetic_energy() + 0.5 * wall.mass * wall.velocity * wall.velocity;
@@ -162,6 +166,9 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
   ShearCellState s = options.resume && std::filesystem::exists(checkpoint)
                          ? load_checkpoint(checkpoint)
                          : initial_state(config);
+  RunCost cost;
+  cost.build_s = seconds_since(start);
+  const double strain_at_start = s.strain;
   CellOutcome outcome;
   if (options.resume && (s.strain >= config.run.strain || s.jammed)) {
     // Nothing left to run: keep the finished run's files as they are.
@@ -171,8 +178,10 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
   }
   write_file_atomically(out / "config.toml", resolved_toml(config));
   const CellUnits units = cell_units(config);
-  TimeStepper stepper(make_friction_law(config.friction, units.eta_f),
-                      make_solver_settings(config.solver), s.dt > 0.0 ? s.dt : 1.0);
+  const SolverSettings settings = make_solver_settings(config.solver);
+  cost.threads = settings.threads;
+  TimeStepper stepper(make_friction_law(config.friction, units.eta_f), settings,
+                      s.dt > 0.0 ? s.dt : 1.0);
   stepper.set_wall_law(CoulombLaw{cell.wall_friction, units.eta_f});
   stepper.restore_contact_memory(s.contact_memory);
 
@@ -188,8 +197,13 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
     const double drive_work =
         wall.drive_force * s.dt * (wall.velocity + 0.5 * s.dt * wall.drive_force / wall.mass);
     const StepReport report = stepper.step(s.world);
+    cost.detection_s += report.detection_seconds;
+    cost.solve_s += report.solve_seconds;
+    cost.contact_updates += double(report.solve.iterations) * double(report.contacts_detected);
+    cost.steps += 1.0;
     ++s.steps;
     s.strain += s.world.sliding_wall->velocity * s.dt / lz;
+    const auto measure_start = std::chrono::steady_clock::now();
     accumulate_step(config, s, report, stepper.contacts());
     s.interval.work_drive += drive_work;
     s.interval.kinetic_end = total_kinetic_energy(s.world);
@@ -209,6 +223,7 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
       s.jam_window_time = s.world.time;
       s.jam_window_strain = s.strain;
     }
+    cost.measure_s += seconds_since(measure_start);
     const bool stop = options.stop_requested != nullptr && options.stop_requested->load();
     if (s.strain >= s.next_checkpoint_strain || stop) {
       s.contact_memory = stepper.contact_memory();
@@ -242,9 +257,9 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
   write_file_atomically(out / "sommerfeld_hist.csv", sommerfeld_histogram_csv(s.histogram));
   write_file_atomically(out / "contacts.csv",
                         contacts_csv(s.world.bodies, stepper.contacts(), s.dt));
-  const double wall =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  write_file_atomically(out / "summary.json", cell_summary(config, s, wall).dump(2) + "\n");
+  cost.strain = s.strain - strain_at_start;
+  cost.wall_s = seconds_since(start);
+  write_file_atomically(out / "summary.json", cell_summary(config, s, cost).dump(2) + "\n");
   outcome.steps = s.steps;
   for (const FlowRow& r : s.rows)
     outcome.unconverged_steps += static_cast<long>(r.unconverged_steps);

@@ -19,7 +19,7 @@ CellUnits cell_units(const Config& config) {
   return u;
 }
 
-nlohmann::json cell_summary(const Config& config, const ShearCellState& s, double wall_time) {
+nlohmann::json cell_summary(const Config& config, const ShearCellState& s, const RunCost& cost) {
   const CellConfig& cell = *config.cell;
   const CellUnits u = cell_units(config);
   const double lz = cell.size[2], area = cell.size[0] * cell.size[1];
@@ -147,7 +147,19 @@ nlohmann::json cell_summary(const Config& config, const ShearCellState& s, doubl
   j["mean_iterations"] = steps > 0.0 ? iterations / steps : 0.0;
   j["frac_steps_unconverged"] = steps > 0.0 ? unconverged / steps : 0.0;
   j["steady_samples"] = v.samples;
-  j["wall_time_s"] = wall_time;
+  j["wall_time_s"] = cost.wall_s;
+  // The cost of this invocation (bench/ reads these; see measure/run_cost.hpp).
+  j["threads"] = cost.threads;
+  j["time_build_s"] = cost.build_s;
+  j["time_detection_s"] = cost.detection_s;
+  j["time_solve_s"] = cost.solve_s;
+  j["time_measure_s"] = cost.measure_s;
+  j["time_other_s"] = cost.wall_s - cost.build_s - cost.detection_s - cost.solve_s - cost.measure_s;
+  j["ns_per_contact_update"] = cost.ns_per_contact_update();
+  j["wall_time_per_strain_s"] =
+      cost.strain > 0.0 ? (cost.wall_s - cost.build_s) / cost.strain : 0.0;
+  j["steps_per_strain"] = cost.strain > 0.0 ? cost.steps / cost.strain : 0.0;
+  j["peak_memory_mib"] = peak_memory_mib();
   return j;
 }
 

@@ -4,6 +4,7 @@
 
 #include "drivers/shear_cell_state.hpp"
 #include "io/config.hpp"
+#include "measure/run_cost.hpp"
 
 namespace dilatant {
 
@@ -17,7 +18,7 @@ struct CellUnits {
 };
 CellUnits cell_units(const Config& config);
 
-nlohmann::json cell_summary(const Config& config, const ShearCellState& state, double wall_time);
+nlohmann::json cell_summary(const Config& config, const ShearCellState& state, const RunCost& cost);
 
 // Rows of sommerfeld_hist.csv: s_low,s_high,count,fraction (sticking contacts first, s = 0).
 std::string sommerfeld_histogram_csv(const SommerfeldHistogram& h);

@@ -22,23 +22,38 @@ double StribeckLaw::mu(double s) const {
 double StribeckLaw::hydrodynamic_root(const TangentialProblem& p, double k, double lo) const {
   // Root of f(v) = v + w p_n mu_HD(k v) - free_slip on [lo, free_slip]; f(lo) <= 0 <= f(hi).
   const double wp = p.compliance * p.normal_impulse;
-  auto mu_hd = [&](double s) { return hydrodynamic_mu(s < s_lim ? s : s_lim); };
-  auto f = [&](double v) { return v + wp * mu_hd(k * v) - p.free_slip; };
   double hi = p.free_slip;
-  // HD friction is weak, so the root lies near the free slip: one fixed-point
-  // step from there is a close start for Newton's method.
-  double v = p.free_slip - wp * mu_hd(k * p.free_slip);
+  // f and f' from one logarithm: mu = 2 pi s L, dmu/ds = 2 pi (L - 1), L = ln(a/s);
+  // beyond s_lim mu is the constant cap.
+  const double mu_cap = hydrodynamic_mu(s_lim);
+  const auto f_and_slope = [&](double v, double& slope) {
+    const double s = k * v;
+    if (s >= s_lim) {
+      slope = 1.0;
+      return v + wp * mu_cap - p.free_slip;
+    }
+    const double log_term = std::log(kLubricationScale / s);
+    slope = 1.0 + wp * k * kTwoPi * (log_term - 1.0);
+    return v + wp * kTwoPi * s * log_term - p.free_slip;
+  };
+  // Start from the last sweep's answer when the solver has one (it moves little
+  // between sweeps); else HD friction is weak, so the root lies near the free
+  // slip and one fixed-point step from there is a close start.
+  double v = p.slip_hint;
+  if (!(v > lo && v < hi)) {
+    const double s_free = k * p.free_slip;
+    v = p.free_slip - wp * (s_free < s_lim ? hydrodynamic_mu(s_free) : mu_cap);
+  }
   if (!(v > lo && v < hi)) v = 0.5 * (lo + hi);
   for (int it = 0; it < 100; ++it) {
-    const double fv = f(v);
+    double slope = 1.0;
+    const double fv = f_and_slope(v, slope);
     if (fv == 0.0) return v;  // exact root: bisecting on would only throw it away
     if (fv > 0.0)
       hi = v;
     else
       lo = v;
-    const double s = k * v;
-    const double dmu = s < s_lim ? kTwoPi * (std::log(kLubricationScale / s) - 1.0) : 0.0;
-    double next = v - fv / (1.0 + wp * dmu * k);
+    double next = v - fv / slope;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // Newton left the bracket
     // 1e-13 relative: far below any Gauss–Seidel tolerance, a few ulps above round-off.
     if (std::abs(next - v) <= 1e-13 * v || hi - lo <= 1e-13 * hi) return next;

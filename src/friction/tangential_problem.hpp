@@ -26,6 +26,7 @@ struct TangentialProblem {
   double dt = 0.0;              // time step: the normal force is N = p_n / dt
   double reduced_radius = 0.0;  // R_p of the Sommerfeld number
   FrictionBranch branch = FrictionBranch::Any;
+  double slip_hint = 0.0;  // sliding speed of the last sweep, a start for root finding (0: none)
 };
 
 enum class Regime : std::uint8_t {

@@ -61,6 +61,10 @@
 //                                per step below this fraction of r_min     (0, 0.5]
 //     freeze_branches_after = 50 sweeps after which each contact keeps its friction
 //                                branch (solver/contact_solver.hpp)        >= 0
+//     threads = 1                threads sharing each sweep; 0 => all cores;
+//                                results do not depend on it. 1 by default:
+//                                runs side by side (sweeps, ctest -j) would
+//                                otherwise fight over the cores            [0, 1024]
 //   [run]
 //     strain = 10.0              shear cell: total strain                  >= 0
 //     time = 0.0                 scene: simulated time (required > 0 there) >= 0
@@ -133,6 +137,7 @@ struct SolverConfig {
   int max_iterations = 1000;
   double max_displacement = 0.02;  // automatic dt (cell): largest move per step / r_min
   int freeze_branches_after = 50;  // sweeps before contacts keep their friction branch
+  int threads = 1;                 // 0 => all cores (solver/slab_partition.hpp)
 };
 
 struct RunConfig {

@@ -212,6 +212,10 @@ Config build(const toml::table& root, std::string source, const std::filesystem:
   check(solver, "freeze_branches_after", freeze,
         freeze >= 0 && freeze <= std::numeric_limits<int>::max(), "must be >= 0");
   c.solver.freeze_branches_after = static_cast<int>(freeze);
+  const auto threads = solver.integer("threads", c.solver.threads);
+  check(solver, "threads", threads, threads >= 0 && threads <= 1024,
+        "must be in [0, 1024] (0 = all cores)");
+  c.solver.threads = static_cast<int>(threads);
 
   c.run = read_run(section("run"), has_cell);
   c.source = std::move(source);

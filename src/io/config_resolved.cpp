@@ -69,7 +69,8 @@ toml::table to_toml(const Config& c) {
                                  {"tolerance", c.solver.tolerance},
                                  {"max_iterations", c.solver.max_iterations},
                                  {"max_displacement", c.solver.max_displacement},
-                                 {"freeze_branches_after", c.solver.freeze_branches_after}});
+                                 {"freeze_branches_after", c.solver.freeze_branches_after},
+                                 {"threads", c.solver.threads}});
   t.insert("run", toml::table{{"strain", c.run.strain},
                               {"time", c.run.time},
                               {"transient_strain", c.run.transient_strain},

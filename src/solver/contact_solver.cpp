@@ -53,8 +53,9 @@ SweepChange sweep(std::span<Contact> contacts, Bodies& b, const Law& law, double
 
     const double p_n = std::max(0.0, -(u_n_free + c.gap * inv_dt) / c.w_n);
     const double free_slip = u_t_free.norm();
-    const TangentialSolution t = law.solve(TangentialProblem{
-        free_slip, c.w_t, p_n, dt, c.reduced_radius, imposed_branch(c, freeze_branches)});
+    const TangentialSolution t =
+        law.solve(TangentialProblem{free_slip, c.w_t, p_n, dt, c.reduced_radius,
+                                    imposed_branch(c, freeze_branches), c.sliding_speed});
     const Vec3 p_t = free_slip > 0.0 ? Vec3((-t.impulse / free_slip) * u_t_free) : Vec3::Zero();
 
     const Vec3 dp = (p_n - c.p_n) * c.normal + (p_t - c.p_t);
@@ -117,32 +118,65 @@ void WallBlock::update(const std::vector<Contact>& contacts, Bodies& bodies) con
 
 SolveReport solve_contacts(std::vector<Contact>& contacts, Bodies& bodies, const FrictionLaw& law,
                            double dt, const SolverSettings& settings) {
-  return solve_contacts(contacts, contacts.size(), bodies, law, law, dt, settings, nullptr);
+  return solve_contacts(contacts, SlabPartition::single(contacts.size(), contacts.size()), bodies,
+                        law, law, dt, settings, nullptr);
 }
 
-SolveReport solve_contacts(std::vector<Contact>& contacts, std::size_t wall_begin, Bodies& bodies,
-                           const FrictionLaw& law, const FrictionLaw& wall_law, double dt,
-                           const SolverSettings& settings, const WallBlock* wall) {
+SolveReport solve_contacts(std::vector<Contact>& contacts, const SlabPartition& slabs,
+                           Bodies& bodies, const FrictionLaw& law, const FrictionLaw& wall_law,
+                           double dt, const SolverSettings& settings, const WallBlock* wall) {
   SolveReport report;
   if (wall != nullptr) wall->update(contacts, bodies);
   if (contacts.empty()) return report;
   report.converged = false;
   const double noise_squared = round_off_floor_squared(contacts, bodies);
-  while (report.iterations < settings.max_iterations) {
-    const bool freeze = report.iterations >= settings.freeze_branches_after;
-    SweepChange ch = sweep_range(contacts, 0, wall_begin, bodies, law, dt, freeze);
-    const SweepChange ch_wall =
-        sweep_range(contacts, wall_begin, contacts.size(), bodies, wall_law, dt, freeze);
-    ch.change_squared += ch_wall.change_squared;
-    ch.impulse_squared += ch_wall.impulse_squared;
-    if (wall != nullptr) wall->update(contacts, bodies);
-    ++report.iterations;
+  const int n = slabs.count();
+  // Two buffers of per-slab sums, by sweep parity: a thread that has finished a
+  // sweep may already write the next sweep's sums while another still reads.
+  std::vector<SweepChange> partial(2 * static_cast<std::size_t>(n));
+  const auto sweep_slab = [&](int k, int sweep, bool freeze) {
+    const auto ks = static_cast<std::size_t>(k);
+    SweepChange ch =
+        sweep_range(contacts, slabs.begin[ks], slabs.wall_begin[ks], bodies, law, dt, freeze);
+    const SweepChange ch_wall = sweep_range(contacts, slabs.wall_begin[ks], slabs.begin[ks + 1],
+                                            bodies, wall_law, dt, freeze);
+    partial[static_cast<std::size_t>((sweep & 1) * n + k)] = {
+        ch.change_squared + ch_wall.change_squared, ch.impulse_squared + ch_wall.impulse_squared};
+  };
+  // Residual of a finished sweep: slab sums added in a fixed order, so every
+  // thread computes the same value whatever the thread count.
+  const auto residual_of = [&](int sweep) {
+    SweepChange ch;
+    for (int k = 0; k < n; ++k) {
+      const SweepChange& p = partial[static_cast<std::size_t>((sweep & 1) * n + k)];
+      ch.change_squared += p.change_squared;
+      ch.impulse_squared += p.impulse_squared;
+    }
     const double change_squared = std::max(0.0, ch.change_squared - noise_squared);
-    report.residual = ch.impulse_squared > 0.0 ? std::sqrt(change_squared / ch.impulse_squared)
-                                               : (change_squared > 0.0 ? 1.0 : 0.0);
-    if (report.residual <= settings.tolerance) {
-      report.converged = true;
-      break;
+    return ch.impulse_squared > 0.0 ? std::sqrt(change_squared / ch.impulse_squared)
+                                    : (change_squared > 0.0 ? 1.0 : 0.0);
+  };
+  const int threads = std::max(1, std::min(settings.threads, n / 2));
+  // Two barriers per sweep (the ends of the two `omp for`). The wall block is
+  // updated by one thread while the others start the next even half: only the
+  // last slab, which is odd, touches the top wall's spheres.
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  {
+    for (int sweep = 0; sweep < settings.max_iterations; ++sweep) {
+      const bool freeze = sweep >= settings.freeze_branches_after;
+#pragma omp for schedule(static)
+      for (int k = 0; k < n; k += 2) sweep_slab(k, sweep, freeze);
+#pragma omp for schedule(static)
+      for (int k = 1; k < n; k += 2) sweep_slab(k, sweep, freeze);
+      const double residual = residual_of(sweep);
+#pragma omp masked
+      {
+        if (wall != nullptr) wall->update(contacts, bodies);
+        report.iterations = sweep + 1;
+        report.residual = residual;
+        report.converged = residual <= settings.tolerance;
+      }
+      if (residual <= settings.tolerance) break;
     }
   }
   return report;

@@ -67,6 +67,7 @@
 
 #include "friction/friction_law.hpp"
 #include "solver/contact.hpp"
+#include "solver/slab_partition.hpp"
 #include "world/bodies.hpp"
 #include "world/sliding_wall.hpp"
 
@@ -76,6 +77,7 @@ struct SolverSettings {
   double tolerance = 1e-6;  // on the relative impulse change of one sweep
   int max_iterations = 1000;
   int freeze_branches_after = 50;  // sweeps before each contact keeps its friction branch
+  int threads = 1;                 // threads sharing a sweep (solver/slab_partition.hpp)
 };
 
 struct SolveReport {
@@ -119,9 +121,11 @@ struct WallBlock {
 SolveReport solve_contacts(std::vector<Contact>& contacts, Bodies& bodies, const FrictionLaw& law,
                            double dt, const SolverSettings& settings);
 
-// Contacts [wall_begin, end) touch a wall sphere and obey wall_law; `wall` may be null.
-SolveReport solve_contacts(std::vector<Contact>& contacts, std::size_t wall_begin, Bodies& bodies,
-                           const FrictionLaw& law, const FrictionLaw& wall_law, double dt,
-                           const SolverSettings& settings, const WallBlock* wall);
+// Contacts ordered in red-black slabs (solver/slab_partition.hpp); those touching
+// a wall sphere obey wall_law; `wall` may be null. The impulses do not depend on
+// settings.threads.
+SolveReport solve_contacts(std::vector<Contact>& contacts, const SlabPartition& slabs,
+                           Bodies& bodies, const FrictionLaw& law, const FrictionLaw& wall_law,
+                           double dt, const SolverSettings& settings, const WallBlock* wall);
 
 }  // namespace dilatant

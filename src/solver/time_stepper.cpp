@@ -1,6 +1,7 @@
 #include "solver/time_stepper.hpp"
 
 #include <algorithm>
+#include <chrono>
 
 namespace dilatant {
 
@@ -31,23 +32,12 @@ void TimeStepper::warm_start(Bodies& bodies) {
   apply_impulses(contacts_, bodies);
 }
 
-void TimeStepper::order_wall_contacts_last(const World& world) {
-  wall_begin_ = contacts_.size();
-  if (world.group.empty()) return;
-  auto touches_wall = [&](const Contact& c) {
-    return world.is_wall(static_cast<std::size_t>(c.i)) ||
-           (!c.with_plane() && world.is_wall(static_cast<std::size_t>(c.other)));
-  };
-  const auto it = std::stable_partition(contacts_.begin(), contacts_.end(),
-                                        [&](const Contact& c) { return !touches_wall(c); });
-  wall_begin_ = static_cast<std::size_t>(it - contacts_.begin());
-}
-
 WallBlock TimeStepper::make_wall_block(World& world, double free_velocity) const {
   WallBlock block;
   block.wall = &*world.sliding_wall;
   block.free_velocity = free_velocity;
-  for (std::size_t k = wall_begin_; k < contacts_.size(); ++k) {
+  if (world.group.empty()) return block;
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
     const Contact& c = contacts_[k];
     const auto index = static_cast<std::int32_t>(k);
     if (world.group[c.i] == BodyGroup::TopWall) block.wall_contacts.emplace_back(index, 1.0);
@@ -94,21 +84,28 @@ StepReport TimeStepper::step(World& world) {
   report.kinetic_energy_free = b.kinetic_energy();
 
   // 2. detect, 3. warm start, 4. solve
+  using Clock = std::chrono::steady_clock;
+  const auto detection_start = Clock::now();
   detector_.detect(world, detection_margin(world), contacts_);
-  order_wall_contacts_last(world);
+  slabs_ = partition_into_slabs(contacts_, world, scratch_);
   free_velocity_.resize(contacts_.size());
   for (std::size_t k = 0; k < contacts_.size(); ++k) {
     free_velocity_[k] = relative_velocity(contacts_[k], b);
   }
   warm_start(b);
+  const auto solve_start = Clock::now();
   if (world.sliding_wall) {
     const WallBlock block = make_wall_block(world, wall_free_velocity);
-    report.solve = solve_contacts(contacts_, wall_begin_, b, law_, wall_law_.value_or(law_), dt_,
+    report.solve = solve_contacts(contacts_, slabs_, b, law_, wall_law_.value_or(law_), dt_,
                                   settings_, &block);
   } else {
-    report.solve = solve_contacts(contacts_, wall_begin_, b, law_, wall_law_.value_or(law_), dt_,
+    report.solve = solve_contacts(contacts_, slabs_, b, law_, wall_law_.value_or(law_), dt_,
                                   settings_, nullptr);
   }
+
+  const auto solve_end = Clock::now();
+  report.detection_seconds = std::chrono::duration<double>(solve_start - detection_start).count();
+  report.solve_seconds = std::chrono::duration<double>(solve_end - solve_start).count();
 
   // 5. store impulses of the contacts that carry load
   memory_.clear();

@@ -31,6 +31,8 @@ struct StepReport {
   double kinetic_energy = 0.0;       // at the end of the step
   double max_overlap = 0.0;          // largest overlap at the end of the step
   ContactWork contact_work;          // exact split of KE(end) - KE(free) by contact kind
+  double detection_seconds = 0.0;    // stages 2-3: detection, slab order, warm start
+  double solve_seconds = 0.0;        // stage 4
 };
 
 class TimeStepper {
@@ -47,8 +49,8 @@ class TimeStepper {
   const FrictionLaw& law() const { return law_; }
   // Contacts of the last step with their impulses and friction regimes.
   const std::vector<Contact>& contacts() const { return contacts_; }
-  // Contacts [wall_begin(), end) of contacts() touch a wall sphere.
-  std::size_t wall_begin() const { return wall_begin_; }
+  // How contacts() is ordered into red-black slabs for the sweep.
+  const SlabPartition& slabs() const { return slabs_; }
 
   // What the contacts of the last step pass to the next (by contact key), for
   // checkpoints.
@@ -60,13 +62,13 @@ class TimeStepper {
  private:
   double detection_margin(const World& world) const;
   void warm_start(Bodies& bodies);
-  void order_wall_contacts_last(const World& world);
   WallBlock make_wall_block(World& world, double free_velocity) const;
   double largest_overlap(const World& world) const;
 
   FrictionLaw law_;
   std::optional<FrictionLaw> wall_law_;
-  std::size_t wall_begin_ = 0;
+  SlabPartition slabs_;
+  std::vector<Contact> scratch_;  // reused by partition_into_slabs
   SolverSettings settings_;
   double dt_;
   ContactDetector detector_;

@@ -1,5 +1,7 @@
 #include "world/bodies.hpp"
 
+#include <algorithm>
+#include <cstddef>
 #include <numbers>
 
 namespace dilatant {
@@ -32,6 +34,26 @@ Vec3 Bodies::momentum() const {
     if (inv_mass[i] > 0.0) p += velocity[i] / inv_mass[i];
   }
   return p;
+}
+
+namespace {
+template <class T>
+void permute_tail(std::vector<T>& v, std::size_t first, const std::vector<std::size_t>& order) {
+  std::vector<T> tail;
+  tail.reserve(order.size());
+  for (std::size_t i : order) tail.push_back(v[i]);
+  std::copy(tail.begin(), tail.end(), v.begin() + static_cast<std::ptrdiff_t>(first));
+}
+}  // namespace
+
+void Bodies::reorder(std::size_t first, const std::vector<std::size_t>& order) {
+  permute_tail(position, first, order);
+  permute_tail(velocity, first, order);
+  permute_tail(angular_velocity, first, order);
+  permute_tail(radius, first, order);
+  permute_tail(inv_mass, first, order);
+  permute_tail(inv_inertia, first, order);
+  permute_tail(id, first, order);
 }
 
 }  // namespace dilatant

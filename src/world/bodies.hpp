@@ -28,6 +28,10 @@ struct Bodies {
   double mass(std::size_t i) const { return inv_mass[i] > 0.0 ? 1.0 / inv_mass[i] : 0.0; }
   double kinetic_energy() const;
   Vec3 momentum() const;
+
+  // Puts body order[k] at index first + k (order is a permutation of
+  // first .. size()-1), keeping ids with their bodies.
+  void reorder(std::size_t first, const std::vector<std::size_t>& order);
 };
 
 }  // namespace dilatant

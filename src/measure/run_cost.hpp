@@ -1,0 +1,28 @@
+#pragma once
+// What a run cost: wall time by stage of the step, the work of the solver in
+// contact updates (one contact solved once in one sweep), and peak memory.
+// Reported in summary.json so that every run is also a benchmark (bench/).
+// Times cover this invocation only (a resumed run counts from its restart).
+
+namespace dilatant {
+
+struct RunCost {
+  double wall_s = 0.0;       // whole invocation
+  double build_s = 0.0;      // initial state (packing) or checkpoint load
+  double detection_s = 0.0;  // contact detection, slab ordering, warm start
+  double solve_s = 0.0;      // Gauss–Seidel sweeps
+  double measure_s = 0.0;    // measurements, time series, snapshots (not checkpoints)
+  double contact_updates = 0.0;
+  double steps = 0.0;   // steps run in this invocation
+  double strain = 0.0;  // strain run in this invocation
+  int threads = 1;
+
+  double ns_per_contact_update() const {
+    return contact_updates > 0.0 ? 1e9 * solve_s / contact_updates : 0.0;
+  }
+};
+
+// Peak resident memory of this process so far, in MiB (getrusage).
+double peak_memory_mib();
+
+}  // namespace dilatant

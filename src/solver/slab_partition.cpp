@@ -1,0 +1,94 @@
+#include "solver/slab_partition.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace dilatant {
+
+SlabPartition SlabPartition::single(std::size_t contacts, std::size_t wall_begin) {
+  SlabPartition p;
+  p.begin = {0, contacts};
+  p.wall_begin = {wall_begin};
+  return p;
+}
+
+namespace {
+
+constexpr int kAxis = 2;  // z
+
+bool touches_wall(const World& world, const Contact& c) {
+  if (world.group.empty()) return false;
+  return world.is_wall(static_cast<std::size_t>(c.i)) ||
+         (!c.with_plane() && world.is_wall(static_cast<std::size_t>(c.other)));
+}
+
+double contact_point(const Contact& c, const Bodies& b) {
+  return b.position[c.i][kAxis] - c.arm_i * c.normal[kAxis];
+}
+
+// Extent of the contact points along the axis, and the largest distance along
+// it from a contact point to the centre of one of its spheres.
+struct Extent {
+  double low = std::numeric_limits<double>::infinity();
+  double high = -std::numeric_limits<double>::infinity();
+  double reach = 0.0;
+};
+
+Extent contact_extent(const std::vector<Contact>& contacts, const World& world) {
+  const Bodies& b = world.bodies;
+  Extent e;
+  for (const Contact& c : contacts) {
+    const double z = contact_point(c, b);
+    e.low = std::min(e.low, z);
+    e.high = std::max(e.high, z);
+    e.reach = std::max(e.reach, std::abs(b.position[c.i][kAxis] - z));
+    if (!c.with_plane()) {
+      const Vec3 d = world.box.minimum_image(b.position[c.other], b.position[c.i]);
+      e.reach = std::max(e.reach, std::abs(b.position[c.i][kAxis] + d[kAxis] - z));
+    }
+  }
+  return e;
+}
+
+}  // namespace
+
+SlabPartition partition_into_slabs(std::vector<Contact>& contacts, const World& world,
+                                   std::vector<Contact>& scratch) {
+  int slabs = 1;
+  Extent e;
+  // A periodic axis would make the first and last slab neighbours through the
+  // boundary; keep one slab there (the shear cell's z is bounded by its walls).
+  if (!world.box.periodic[kAxis] && !contacts.empty()) {
+    e = contact_extent(contacts, world);
+    const double length = e.high - e.low;
+    while (2 * slabs <= kMaxSlabs && length / (2 * slabs) >= 2.0 * e.reach) slabs *= 2;
+  }
+  const double width = slabs > 1 ? (e.high - e.low) / slabs : 1.0;
+  // Counting sort on key = 2 slab + touches_wall: stable, O(contacts).
+  const auto key = [&](const Contact& c) {
+    int slab = 0;
+    if (slabs > 1) {
+      slab =
+          std::min(slabs - 1, static_cast<int>((contact_point(c, world.bodies) - e.low) / width));
+    }
+    return 2 * slab + (touches_wall(world, c) ? 1 : 0);
+  };
+  std::vector<std::size_t> first(2 * static_cast<std::size_t>(slabs) + 1, 0);
+  for (const Contact& c : contacts) ++first[static_cast<std::size_t>(key(c)) + 1];
+  for (std::size_t k = 1; k < first.size(); ++k) first[k] += first[k - 1];
+  SlabPartition p;
+  p.begin.resize(static_cast<std::size_t>(slabs) + 1);
+  p.wall_begin.resize(static_cast<std::size_t>(slabs));
+  for (std::size_t s = 0; s < p.wall_begin.size(); ++s) {
+    p.begin[s] = first[2 * s];
+    p.wall_begin[s] = first[2 * s + 1];
+  }
+  p.begin.back() = contacts.size();
+  scratch.resize(contacts.size());
+  for (const Contact& c : contacts) scratch[first[static_cast<std::size_t>(key(c))]++] = c;
+  contacts.swap(scratch);
+  return p;
+}
+
+}  // namespace dilatant

@@ -1,0 +1,45 @@
+#pragma once
+// Red-black slabs along z: the order of a Gauss–Seidel sweep that two or more
+// threads can share without locks, and with results that do not depend on the
+// number of threads.
+//
+// Each contact belongs to the slab holding its contact point. The slabs are at
+// least twice as wide as the farthest a contact's sphere centre lies from its
+// contact point, so contacts of two slabs that are not neighbours never share
+// a sphere that moves (fixed bodies, inv_mass = 0, are never written). A sweep
+// therefore solves all even slabs side by side, then all odd ones; inside a
+// slab contacts keep their (i, j) order. The order is fixed by the geometry
+// alone, so 1, 2 or 4 threads compute bit-identical impulses.
+//
+// Why z: in the shear cell spheres move along x and only diffuse in z, so
+// spheres numbered by height at the start (drivers/shear_cell_builder.cpp) stay
+// grouped in memory by slab, and two threads rarely write to one cache line.
+// The slab count is 1, 2, 4 or 8 (8 keeps the even and odd halves balanced on
+// 2 and 4 threads), the largest that fits; one slab if z is periodic.
+#include <cstddef>
+#include <vector>
+
+#include "solver/contact.hpp"
+#include "world/world.hpp"
+
+namespace dilatant {
+
+struct SlabPartition {
+  // Slab k holds contacts [begin[k], wall_begin[k]) between particles and
+  // [wall_begin[k], begin[k + 1]) touching a wall sphere (which obey the wall's
+  // friction law). begin has count() + 1 entries.
+  std::vector<std::size_t> begin{0, 0};
+  std::vector<std::size_t> wall_begin{0};
+
+  int count() const { return static_cast<int>(wall_begin.size()); }
+  static SlabPartition single(std::size_t contacts, std::size_t wall_begin);
+};
+
+inline constexpr int kMaxSlabs = 8;
+
+// Reorders `contacts` by slab (keeping their relative order inside a slab) and
+// returns the ranges; `scratch` is reused storage.
+SlabPartition partition_into_slabs(std::vector<Contact>& contacts, const World& world,
+                                   std::vector<Contact>& scratch);
+
+}  // namespace dilatant
