@@ -211,12 +211,12 @@ DivergenceOutcome fit_divergence(const std::vector<PhiSeries>& series) {
     const std::size_t need = s.phi_max ? 1 : 2;
     if (s.points.size() < need) {
       out.why_not =
-          fmt::format("sample {} has {} thickening curve{} (needs {}{})", s.sample, s.points.size(),
+          fmt::format("sample {} has {} CST curve{} (needs {}{})", s.sample, s.points.size(),
                       s.points.size() == 1 ? "" : "s", need, s.phi_max ? "" : " to fit phi_max");
       return out;
     }
     if (s.phi_max && largest_phi(s) >= *s.phi_max) {
-      out.why_not = fmt::format("sample {}: a thickening curve at phi {} >= phi_max {}", s.sample,
+      out.why_not = fmt::format("sample {}: a CST curve at phi {} >= phi_max {}", s.sample,
                                 largest_phi(s), *s.phi_max);
       return out;
     }
@@ -224,10 +224,9 @@ DivergenceOutcome fit_divergence(const std::vector<PhiSeries>& series) {
     points += s.points.size();
   }
   if (points <= 2 + fitted_phi_max) {
-    out.why_not =
-        fmt::format("{} thickening curve{} for {} parameters (A, alpha{}); needs at least {}",
-                    points, points == 1 ? "" : "s", 2 + fitted_phi_max,
-                    fitted_phi_max ? ", phi_max" : "", 3 + fitted_phi_max);
+    out.why_not = fmt::format("{} CST curve{} for {} parameters (A, alpha{}); needs at least {}",
+                              points, points == 1 ? "" : "s", 2 + fitted_phi_max,
+                              fitted_phi_max ? ", phi_max" : "", 3 + fitted_phi_max);
     return out;
   }
 
