@@ -72,7 +72,7 @@ def flow_curves(out, samples, curves, points, units):
         for index, c in enumerate(curves):
             if c["sample"] != sample:
                 continue
-            colour = cmap(norm(number(c["phi"])))
+            colour = cmap(0.85 * norm(number(c["phi"])))  # the pale end reads badly
             pts = [p for p in points if int(p["curve"]) == index]
             flowing = [p for p in pts if p["jammed"] == "false"]
             rate = np.array([number(p["shear_rate"]) for p in flowing])
@@ -90,6 +90,12 @@ def flow_curves(out, samples, curves, points, units):
             if (~valid).any():
                 ax.plot(rate[~valid], eta[~valid], "o", ms=5, mfc="none", color="0.5",
                         label="outside validity" if index == 0 else None)
+            if any(p["jammed"] == "true" for p in pts) and len(rate):
+                # The viscosity diverges: an arrow up from the last flowing point.
+                top = np.argmax(rate)
+                ax.annotate("jams", xy=(rate[top], eta[top]), xytext=(rate[top], eta[top] * 4),
+                            color=colour, fontsize=7, ha="center",
+                            arrowprops={"arrowstyle": "<-", "color": colour})
             k, n = number(c["consistency"]), number(c["n"])
             if math.isfinite(k) and math.isfinite(n) and window.any():
                 g = np.geomspace(rate[window].min(), rate[window].max(), 20)
@@ -142,7 +148,7 @@ def n_vs_phi(out, samples, curves, fits):
     ax.set_xlabel(r"volume fraction $\phi$")
     ax.set_ylabel(r"Ostwald–de Waele exponent $n$ ($\eta\propto\dot\gamma^n$)")
     ax.set_title(r"$n - 1 = A\,x^{-\alpha}$, dashed: $\phi_{max}$", fontsize=10)
-    ax.legend(fontsize=8, title="sample", title_fontsize=8)
+    ax.legend(fontsize=8, title="sample", title_fontsize=8, loc="upper left")
     save(fig, out, "n_vs_phi")
 
 
