@@ -39,6 +39,8 @@ double median(std::vector<double> v) {
 double scatter_about_neighbours(const std::vector<double>& x, const std::vector<double>& y) {
   std::vector<double> z;
   for (std::size_t i = 1; i + 1 < x.size(); ++i) {
+    // Equal stresses occur only in rate-controlled ramps sorted by stress.
+    if (!(x[i + 1] > x[i - 1])) continue;
     const double t = (x[i] - x[i - 1]) / (x[i + 1] - x[i - 1]);
     const double r = y[i] - ((1.0 - t) * y[i - 1] + t * y[i + 1]);
     z.push_back(std::abs(r) / std::sqrt(1.0 + (1.0 - t) * (1.0 - t) + t * t));

@@ -93,7 +93,8 @@ std::string draw_plots(const std::string& python, const std::string& script,
   std::string dir_arg = dir.string(), python_arg = python, script_arg = script;
   char* argv[] = {python_arg.data(), script_arg.data(), dir_arg.data(), nullptr};
   pid_t pid = 0;
-  const int spawned = posix_spawn(&pid, python.c_str(), &actions, nullptr, argv, environ);
+  // posix_spawnp: a bare name such as --python python3 is looked up in PATH.
+  const int spawned = posix_spawnp(&pid, python.c_str(), &actions, nullptr, argv, environ);
   posix_spawn_file_actions_destroy(&actions);
   close(fds[1]);
   if (spawned != 0) {
