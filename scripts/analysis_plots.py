@@ -191,8 +191,13 @@ def collapse(out, samples, curves, fits):
     ax_lin.set_xlim(left=0)
     ax_log.set_xscale("log")
     ax_log.set_yscale("log")
-    ax_log.yaxis.set_minor_formatter(matplotlib.ticker.LogFormatter(labelOnlyBase=False,
-                                                                    minor_thresholds=(2, 0.5)))
+    # Plain numbers (0.5, 1, 2), not 5e-01; minor ticks labelled at 2, 3 and 5 only.
+    plain = matplotlib.ticker.FuncFormatter(lambda v, _: f"{v:g}")
+    some = matplotlib.ticker.FuncFormatter(
+        lambda v, _: f"{v:g}" if round(v / 10 ** math.floor(math.log10(v))) in (2, 3, 5) else "")
+    for axis in (ax_log.xaxis, ax_log.yaxis):
+        axis.set_major_formatter(plain)
+    ax_log.yaxis.set_minor_formatter(some)
     ax_log.set_xlabel(r"$x = (\phi_{max} - \phi)/\phi_{max}$")
     ax_log.set_ylabel(r"$n - 1$")
     ax_lin.legend(fontsize=8, title="sample", title_fontsize=8)
