@@ -25,6 +25,7 @@ try:
     import matplotlib
 
     matplotlib.use("Agg")
+    matplotlib.rcParams["svg.hashsalt"] = "dilatant"
     import matplotlib.pyplot as plt
     import matplotlib.ticker
     import numpy as np
@@ -53,7 +54,10 @@ def save(fig, out, name):
     for ext in ("png", "svg"):
         final = out / f"{name}.{ext}"
         part = out / f"{name}.{ext}.part"
-        fig.savefig(part, format=ext, dpi=150, bbox_inches="tight")
+        # No date in the SVG and fixed element ids: re-drawing the same data gives the
+        # same file (the docs' figures do not change when regenerated).
+        metadata = {"Date": None} if ext == "svg" else None
+        fig.savefig(part, format=ext, dpi=150, bbox_inches="tight", metadata=metadata)
         os.replace(part, final)
     plt.close(fig)
 
