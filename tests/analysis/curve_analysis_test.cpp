@@ -53,7 +53,7 @@ TEST(CurveAnalysis, NoiselessCurveGivesPlateauOnsetAndExponent) {
     EXPECT_GE(r.window_points, 4u);
     EXPECT_DOUBLE_EQ(r.window_stress_high, 700.0);
     // K of eta = K gamma_dot^n reproduces the top point's viscosity (on the power law).
-    const FlowPoint& top = model.curve().points.back();
+    const FlowPoint top = model.curve().points.back();
     EXPECT_NEAR(r.consistency * std::pow(top.shear_rate, r.n) / top.viscosity, 1.0, 0.02);
   }
 }
