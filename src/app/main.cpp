@@ -5,6 +5,7 @@
 #include <exception>
 #include <iostream>
 
+#include "app/analyze_command.hpp"
 #include "app/run_command.hpp"
 #include "dilatant/version.hpp"
 #include "io/input_error.hpp"
@@ -17,6 +18,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   dilatant::RunCommandArgs run_args;
   CLI::App* run = dilatant::add_run_command(app, run_args);
+  dilatant::AnalyzeCommandArgs analyze_args;
+  CLI::App* analyze = dilatant::add_analyze_command(app, analyze_args);
 
   try {
     app.parse(argc, argv);
@@ -27,6 +30,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (run->parsed()) return dilatant::execute_run_command(run_args);
+    if (analyze->parsed()) return dilatant::execute_analyze_command(analyze_args);
   } catch (const dilatant::InputError& e) {
     std::cerr << "dilatant: error: " << e.what() << "\n";
     return 2;

@@ -3,7 +3,6 @@
 // and output folder are checked. Exit codes: 0 success, 2 bad input with exactly
 // one line on stderr naming the culprit, 1 any other failure.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "io/io_test_files.hpp"
+#include "app/cli_runner.hpp"
 
 namespace dilatant {
 namespace {
@@ -78,10 +77,9 @@ int line_of(const std::string& text, const std::string& needle) {
   return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
 }
 
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test::read_text;
+using test::RunResult;
+using TempDir = test::CliDir;
 
 std::vector<std::string> split(const std::string& s, char sep) {
   std::vector<std::string> parts;
@@ -90,50 +88,6 @@ std::vector<std::string> split(const std::string& s, char sep) {
   while (std::getline(in, part, sep)) parts.push_back(part);
   return parts;
 }
-
-// Single-quoted for /bin/sh.
-std::string shell_quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) {
-    if (c == '\'') {
-      q.append("'\\''");
-    } else {
-      q.push_back(c);
-    }
-  }
-  q.push_back('\'');
-  return q;
-}
-
-struct RunResult {
-  int exit_code = -1;  // -1: killed by a signal
-  std::string out;
-  std::string err;
-};
-
-// A private temporary directory (tests/io/io_test_files.hpp) that can also run
-// the executable inside it.
-class TempDir : public test::TempDir {
- public:
-  // Runs the dilatant executable with `args`; stdout and stderr are captured.
-  RunResult run(const std::vector<std::string>& args) const {
-    const fs::path out = path() / "stdout.txt";
-    const fs::path err = path() / "stderr.txt";
-    std::string command = shell_quote(DILATANT_EXECUTABLE);
-    for (const auto& a : args) command.append(" ").append(shell_quote(a));
-    command.append(" >").append(shell_quote(out.string()));
-    command.append(" 2>").append(shell_quote(err.string()));
-    command.append(" </dev/null");
-    const int status = std::system(command.c_str());
-    RunResult r;
-    if (status != -1 && WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
-    r.out = read_text(out);
-    r.err = read_text(err);
-    fs::remove(out);
-    fs::remove(err);
-    return r;
-  }
-};
 
 std::vector<fs::path> part_files(const fs::path& dir) {
   std::vector<fs::path> parts;

@@ -1,0 +1,177 @@
+#include "analysis/column_names.hpp"
+
+#include <algorithm>
+#include <array>
+#include <utility>
+
+namespace dilatant::analysis {
+namespace {
+
+using namespace std::string_view_literals;
+
+struct Alias {
+  std::string_view name;
+  Quantity quantity;
+};
+
+// Lower-case names, spaces for '_', '-' and '.'; UTF-8 Greek symbols as written
+// by rheometer software (γ̇ is gamma followed by a combining dot above).
+constexpr std::array kAliases = {
+    Alias{"shear rate", Quantity::ShearRate},
+    Alias{"shearrate", Quantity::ShearRate},
+    Alias{"rate", Quantity::ShearRate},
+    Alias{"strain rate", Quantity::ShearRate},
+    Alias{"gamma dot", Quantity::ShearRate},
+    Alias{"gammadot", Quantity::ShearRate},
+    Alias{"gdot", Quantity::ShearRate},
+    Alias{"\xCE\xB3\xCC\x87", Quantity::ShearRate},  // γ̇
+    Alias{"shear stress", Quantity::ShearStress},
+    Alias{"shearstress", Quantity::ShearStress},
+    Alias{"stress", Quantity::ShearStress},
+    Alias{"tau", Quantity::ShearStress},
+    Alias{"\xCF\x84", Quantity::ShearStress},  // τ
+    Alias{"sigma", Quantity::ShearStress},
+    Alias{"viscosity", Quantity::Viscosity},
+    Alias{"apparent viscosity", Quantity::Viscosity},
+    Alias{"shear viscosity", Quantity::Viscosity},
+    Alias{"dynamic viscosity", Quantity::Viscosity},
+    Alias{"visc", Quantity::Viscosity},
+    Alias{"eta", Quantity::Viscosity},
+    Alias{"\xCE\xB7", Quantity::Viscosity},  // η
+};
+
+struct Unit {
+  std::string_view text;  // normalised: see normalise_unit
+  Quantity quantity;
+  double factor;
+};
+
+constexpr std::array kUnits = {
+    Unit{"1/s", Quantity::ShearRate, 1.0},       Unit{"s^-1", Quantity::ShearRate, 1.0},
+    Unit{"s-1", Quantity::ShearRate, 1.0},       Unit{"/s", Quantity::ShearRate, 1.0},
+    Unit{"1/sec", Quantity::ShearRate, 1.0},     Unit{"Pa", Quantity::ShearStress, 1.0},
+    Unit{"pa", Quantity::ShearStress, 1.0},      Unit{"mPa", Quantity::ShearStress, 1e-3},
+    Unit{"kPa", Quantity::ShearStress, 1e3},     Unit{"MPa", Quantity::ShearStress, 1e6},
+    Unit{"dyn/cm2", Quantity::ShearStress, 0.1}, Unit{"dyn/cm^2", Quantity::ShearStress, 0.1},
+    Unit{"dyn/cm", Quantity::ShearStress, 0.1},  // "dyn/cm²" once the ² is dropped
+    Unit{"Pas", Quantity::Viscosity, 1.0},       Unit{"pas", Quantity::Viscosity, 1.0},
+    Unit{"mPas", Quantity::Viscosity, 1e-3},     Unit{"kPas", Quantity::Viscosity, 1e3},
+    Unit{"cP", Quantity::Viscosity, 1e-3},       Unit{"cp", Quantity::Viscosity, 1e-3},
+    Unit{"P", Quantity::Viscosity, 0.1},
+};
+
+std::string_view trim(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  return s.substr(first, s.find_last_not_of(" \t") - first + 1);
+}
+
+std::string normalise_name(std::string_view name) {
+  std::string out;
+  for (const char c : name) {
+    char d = c;
+    if (d >= 'A' && d <= 'Z') d = static_cast<char>(d - 'A' + 'a');
+    if (d == '_' || d == '-' || d == '.' || d == '\t') d = ' ';
+    if (d == ' ' && (out.empty() || out.back() == ' ')) continue;
+    out.push_back(d);
+  }
+  // A trailing ':' is kept: "Rate:" is a metadata key, not a column heading.
+  while (!out.empty() && out.back() == ' ') out.pop_back();
+  return out;
+}
+
+std::optional<Quantity> find_alias(std::string_view normalised) {
+  for (const auto& a : kAliases)
+    if (a.name == normalised) return a.quantity;
+  return std::nullopt;
+}
+
+// A name, or a name followed by its symbol ("shear rate γ̇").
+std::optional<Quantity> recognise(std::string_view name) {
+  const std::string n = normalise_name(name);
+  if (auto q = find_alias(n)) return q;
+  const auto space = n.rfind(' ');
+  if (space == std::string::npos) return std::nullopt;
+  const auto symbol = find_alias(std::string_view(n).substr(space + 1));
+  const auto rest = find_alias(std::string_view(n).substr(0, space));
+  if (symbol && rest && *symbol == *rest) return rest;
+  return std::nullopt;
+}
+
+// Keeps ASCII letters, digits, '/', '^' and '-': "mPa·s", "mPa.s", "mPa s" and
+// "mPa*s" all become "mPas".
+std::string normalise_unit(std::string_view unit) {
+  if (trim(unit) == "s\xE2\x81\xBB\xC2\xB9") return "s^-1";  // s⁻¹
+  std::string out;
+  for (const char c : unit) {
+    const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                      c == '/' || c == '^' || c == '-';
+    if (keep) out.push_back(c);
+  }
+  return out;
+}
+
+// "name [unit]", "name (unit)", "name / unit", "name in unit".
+std::pair<std::string_view, std::string_view> split_heading(std::string_view h) {
+  for (const auto& [open, close] : {std::pair{'[', ']'}, std::pair{'(', ')'}}) {
+    const auto at = h.find(open);
+    if (at == std::string_view::npos) continue;
+    const auto end = h.find(close, at);
+    const auto inside = h.substr(at + 1, end == std::string_view::npos ? end : end - at - 1);
+    // "Shear rate (γ̇)": a symbol in parentheses is part of the name.
+    if (open == '(' && find_alias(normalise_name(inside))) return {h.substr(0, at), ""};
+    return {h.substr(0, at), trim(inside)};
+  }
+  for (const auto sep : {" / "sv, " in "sv}) {
+    const auto at = h.find(sep);
+    if (at != std::string_view::npos) return {h.substr(0, at), trim(h.substr(at + sep.size()))};
+  }
+  return {h, ""};
+}
+
+}  // namespace
+
+std::string_view quantity_name(Quantity q) {
+  switch (q) {
+    case Quantity::ShearRate:
+      return "shear rate";
+    case Quantity::ShearStress:
+      return "shear stress";
+    case Quantity::Viscosity:
+      return "viscosity";
+  }
+  return "";
+}
+
+Heading parse_heading(std::string_view heading) {
+  const auto [name, unit] = split_heading(trim(heading));
+  return Heading{recognise(name), std::string(unit)};
+}
+
+std::string unit_of_units_field(std::string_view field) {
+  std::string_view f = trim(field);
+  if (f.size() >= 2 && (f.front() == '[' || f.front() == '(')) f = trim(f.substr(1, f.size() - 2));
+  return std::string(f);
+}
+
+std::optional<double> si_factor(Quantity q, std::string_view unit) {
+  if (trim(unit).empty()) return 1.0;
+  const std::string u = normalise_unit(unit);
+  for (const auto& known : kUnits)
+    if (known.quantity == q && known.text == u) return known.factor;
+  return std::nullopt;
+}
+
+std::string_view known_units(Quantity q) {
+  switch (q) {
+    case Quantity::ShearRate:
+      return "1/s, s^-1";
+    case Quantity::ShearStress:
+      return "Pa, mPa, kPa, MPa, dyn/cm2";
+    case Quantity::Viscosity:
+      return "Pa·s, mPa·s, kPa·s, cP, P";
+  }
+  return "";
+}
+
+}  // namespace dilatant::analysis

@@ -1,0 +1,257 @@
+#include "analysis/curve_analysis.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "analysis/polynomial_fit.hpp"
+#include "analysis/student_t.hpp"
+#include "io/input_error.hpp"
+
+namespace dilatant::analysis {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// The flat bottom: within 3 sigma of the minimum. The smoothed minimum of a
+// noisy plateau lies about 2 sigma low, so a narrower band would keep only the
+// low points and bias eta_newtonian down; a wider one would take in the foot of
+// the thickening branch and any low-stress thinning, biasing it up.
+constexpr double kPlateauSigmas = 3.0;
+// A quadratic term beyond 2 standard errors means the window is curved. Lower
+// thresholds cut the bias from the crossover at the foot of the window but
+// shorten it (docs/analysis.md: 2 gives the least error on synthetic curves).
+constexpr double kCurvatureSigmas = 2.0;
+// 1.4826 x median absolute deviation estimates sigma of a normal distribution.
+constexpr double kMadToSigma = 1.4826;
+constexpr std::size_t kMinFitPoints = 3;
+
+double median(std::vector<double> v) {
+  const auto mid = v.begin() + static_cast<long>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  if (v.size() % 2 == 1) return *mid;
+  return 0.5 * (*mid + *std::max_element(v.begin(), mid));
+}
+
+// Sigma of y from the scatter of each inner point about the straight line
+// through its two neighbours: r = y_i - ((1-t) y_{i-1} + t y_{i+1}) has variance
+// sigma^2 (1 + (1-t)^2 + t^2). Robust (median) against the curvature at the bend.
+double scatter_about_neighbours(const std::vector<double>& x, const std::vector<double>& y) {
+  std::vector<double> z;
+  for (std::size_t i = 1; i + 1 < x.size(); ++i) {
+    // Equal stresses occur only in rate-controlled ramps sorted by stress.
+    if (!(x[i + 1] > x[i - 1])) continue;
+    const double t = (x[i] - x[i - 1]) / (x[i + 1] - x[i - 1]);
+    const double r = y[i] - ((1.0 - t) * y[i - 1] + t * y[i + 1]);
+    z.push_back(std::abs(r) / std::sqrt(1.0 + (1.0 - t) * (1.0 - t) + t * t));
+  }
+  return z.empty() ? 0.0 : kMadToSigma * median(z);
+}
+
+std::vector<double> running_median3(const std::vector<double>& v) {
+  std::vector<double> s = v;
+  for (std::size_t i = 1; i + 1 < v.size(); ++i)
+    s[i] = std::max(std::min(v[i - 1], v[i]), std::min(std::max(v[i - 1], v[i]), v[i + 1]));
+  return s;
+}
+
+// The fit points of a curve in log variables.
+struct LogCurve {
+  std::vector<std::size_t> index;  // into curve.points
+  std::vector<double> x;           // ln tau
+  std::vector<double> y;           // ln gamma_dot
+  std::vector<double> e;           // ln eta = x - y
+  std::vector<double> sigma;       // of y
+};
+
+LogCurve fit_points(const FlowCurve& curve, const AnalysisSettings& s, double& noise) {
+  LogCurve c;
+  bool errors_known = true;
+  for (std::size_t i = 0; i < curve.points.size(); ++i) {
+    const FlowPoint& p = curve.points[i];
+    if (!p.valid || p.jammed || !(p.shear_rate > 0.0)) continue;
+    c.index.push_back(i);
+    c.x.push_back(std::log(p.shear_stress));
+    c.y.push_back(std::log(p.shear_rate));
+    c.e.push_back(c.x.back() - c.y.back());
+    errors_known = errors_known && p.shear_rate_err > 0.0;
+    c.sigma.push_back(std::max(p.shear_rate_err / p.shear_rate, s.noise_floor));
+  }
+  if (c.index.empty()) return c;
+  if (errors_known) {
+    noise = median(c.sigma);
+  } else {
+    noise = std::max(scatter_about_neighbours(c.x, c.y), s.noise_floor);
+    std::fill(c.sigma.begin(), c.sigma.end(), noise);
+  }
+  return c;
+}
+
+template <class T>
+std::vector<T> slice(const std::vector<T>& v, std::size_t from, std::size_t to) {
+  return {v.begin() + static_cast<long>(from), v.begin() + static_cast<long>(to)};
+}
+
+PolynomialFit fit_range(const LogCurve& c, std::size_t from, std::size_t to, int degree) {
+  return fit_polynomial(slice(c.x, from, to), slice(c.y, from, to), slice(c.sigma, from, to),
+                        degree);
+}
+
+// Step 4: the top points, grown down towards `onset`: the largest window whose
+// quadratic term stays within kCurvatureSigmas standard errors. Every start is
+// tried (not only until the first failure) so that one noisy point near the top
+// does not cut the window short.
+std::size_t automatic_window_start(const LogCurve& c, std::size_t onset,
+                                   const AnalysisSettings& s) {
+  const std::size_t n = c.x.size();
+  const std::size_t first =
+      std::max(kMinFitPoints, static_cast<std::size_t>(std::max(s.min_window_points, 0)));
+  std::size_t best = n - std::min(first, n - onset);
+  for (std::size_t start = best; start-- > onset;) {
+    const PolynomialFit quad = fit_range(c, start, n, 2);
+    if (std::abs(quad.coefficients[2]) <= kCurvatureSigmas * std::sqrt(quad.covariance(2, 2)))
+      best = start;
+  }
+  return best;
+}
+
+// Step 5: n and its interval from the window [from, to).
+void fit_exponent(const FlowCurve& curve, const LogCurve& c, std::size_t from, std::size_t to,
+                  const AnalysisSettings& s, CurveResult& r) {
+  const PolynomialFit line = fit_range(c, from, to, 1);
+  const double b = line.coefficients[1];
+  const double dof = static_cast<double>(line.dof());
+  const double scale = dof > 0 ? std::max(1.0, line.chi2 / dof) : 1.0;
+  const double se = std::sqrt(line.covariance(1, 1) * scale);
+  const double t = student_t_quantile(0.5 + 0.5 * s.confidence, std::max(dof, 1.0));
+  const auto exponent = [](double slope) { return slope > 0.0 ? 1.0 / slope - 1.0 : kInfinity; };
+  r.n = exponent(b);
+  r.n_low = exponent(b + t * se);
+  r.n_high = exponent(b - t * se);
+  r.n_sigma = b > 0.0 ? se / (b * b) : kInfinity;
+  // ln gamma_dot = a + b ln tau  <=>  eta = K gamma_dot^n with ln K = -a/b.
+  const double a = line.coefficients[0] - b * line.x0;
+  if (b > 0.0) r.consistency = std::exp(-a / b);
+  r.window_points = to - from;
+  r.window_stress_low = curve.points[c.index[from]].shear_stress;
+  r.window_stress_high = curve.points[c.index[to - 1]].shear_stress;
+  for (std::size_t k = from; k < to; ++k) r.in_window[c.index[k]] = true;
+}
+
+// The window the user set, as [from, to) in fit points.
+std::pair<std::size_t, std::size_t> user_window(const FlowCurve& curve, const LogCurve& c) {
+  const StressWindow& w = *curve.window;
+  std::size_t from = c.x.size(), to = 0;
+  for (std::size_t k = 0; k < c.x.size(); ++k) {
+    const double tau = curve.points[c.index[k]].shear_stress;
+    if (tau < w.low || tau > w.high) continue;
+    from = std::min(from, k);
+    to = k + 1;
+  }
+  if (to < from + kMinFitPoints)
+    throw InputError(fmt::format("{} = [{}, {}]: holds {} fitted points of {}; need at least {}",
+                                 w.origin, w.low, w.high, to > from ? to - from : 0, curve.source,
+                                 kMinFitPoints));
+  return {from, to};
+}
+
+}  // namespace
+
+std::string_view regime_name(Regime r) {
+  switch (r) {
+    case Regime::Newtonian:
+      return "newtonian";
+    case Regime::Cst:
+      return "cst";
+    case Regime::Dst:
+      return "dst";
+    case Regime::Unresolved:
+      return "unresolved";
+  }
+  return "";
+}
+
+std::string_view dst_evidence_name(DstEvidence e) {
+  switch (e) {
+    case DstEvidence::None:
+      return "";
+    case DstEvidence::RateNotIncreasing:
+      return "rate_not_increasing";
+    case DstEvidence::ExponentAboveCap:
+      return "n_above_cap";
+    case DstEvidence::Jammed:
+      return "jammed";
+  }
+  return "";
+}
+
+CurveResult analyse_curve(const FlowCurve& curve, const AnalysisSettings& s) {
+  CurveResult r;
+  r.in_window.assign(curve.points.size(), false);
+  const bool jammed = std::any_of(curve.points.begin(), curve.points.end(),
+                                  [](const FlowPoint& p) { return p.jammed; });
+  const LogCurve c = fit_points(curve, s, r.noise);
+  const std::size_t n = c.x.size();
+  if (n < kMinFitPoints) {
+    r.regime = jammed ? Regime::Dst : Regime::Unresolved;
+    if (jammed) r.dst_evidence = DstEvidence::Jammed;
+    return r;
+  }
+
+  // Steps 2-3: plateau and onset on the smoothed ln eta.
+  const std::vector<double> smooth = running_median3(c.e);
+  const auto bottom =
+      static_cast<std::size_t>(std::min_element(smooth.begin(), smooth.end()) - smooth.begin());
+  const auto first_above = [&](double level) {
+    std::size_t k = bottom + 1;
+    while (k < n && smooth[k] <= level) ++k;
+    return k;
+  };
+  const double tolerance = kPlateauSigmas * r.noise;
+  const std::size_t rough_onset = first_above(smooth[bottom] + std::log(s.onset_factor));
+  std::vector<double> plateau;
+  for (std::size_t k = 0; k < rough_onset; ++k)
+    if (smooth[k] <= smooth[bottom] + tolerance) plateau.push_back(c.e[k]);
+  r.eta_newtonian = std::exp(median(plateau));
+  const double threshold = std::log(s.onset_factor * r.eta_newtonian);
+  const std::size_t onset = first_above(threshold);
+
+  if (onset < n) {
+    double x_onset = c.x[onset];
+    const double below = smooth[onset - 1];
+    if (below < threshold)
+      x_onset = c.x[onset - 1] +
+                (threshold - below) / (smooth[onset] - below) * (c.x[onset] - c.x[onset - 1]);
+    r.onset_stress = std::exp(x_onset);
+    r.onset_rate = r.onset_stress / (s.onset_factor * r.eta_newtonian);
+  }
+
+  if (curve.window) {
+    const auto [from, to] = user_window(curve, c);
+    r.window_from_user = true;
+    fit_exponent(curve, c, from, to, s, r);
+  } else if (onset < n && n - onset >= kMinFitPoints) {
+    fit_exponent(curve, c, automatic_window_start(c, onset, s), n, s, r);
+  }
+
+  // Step 6: the regime.
+  if (jammed) {
+    r.regime = Regime::Dst;
+    r.dst_evidence = DstEvidence::Jammed;
+  } else if (onset >= n) {
+    r.regime = Regime::Newtonian;
+  } else if (r.window_points == 0) {
+    r.regime = Regime::Unresolved;
+  } else if (std::isinf(r.n)) {
+    r.regime = Regime::Dst;
+    r.dst_evidence = DstEvidence::RateNotIncreasing;
+  } else if (r.n > s.dst_n_cap) {
+    r.regime = Regime::Dst;
+    r.dst_evidence = DstEvidence::ExponentAboveCap;
+  } else {
+    r.regime = Regime::Cst;
+  }
+  return r;
+}
+
+}  // namespace dilatant::analysis

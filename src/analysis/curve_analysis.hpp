@@ -1,0 +1,74 @@
+#pragma once
+// One flow curve: Newtonian plateau, onset of thickening, Ostwald-de Waele
+// exponent n of eta ∝ gamma_dot^n in the thickening window, and the regime.
+//
+// The fit is made in the variables of a stress-controlled ramp: the stress is
+// imposed and known, the rate is measured with noise. In the window,
+//     ln gamma_dot = a + b ln tau,   b = 1/(n+1)  (eta = tau/gamma_dot ∝ gamma_dot^n)
+// is fitted by weighted least squares of ln gamma_dot on ln tau. This stays
+// well posed when the curve becomes vertical in eta(gamma_dot) (b -> 0, n -> inf,
+// DST) and gives an asymmetric interval for n = 1/b - 1 from the symmetric one
+// for b. The rules (docs/analysis.md):
+//
+//  1. Noise: sigma of ln gamma_dot per point, from the simulation's error bars or,
+//     for rheometer data, estimated robustly from the scatter of each point about
+//     the line through its neighbours; never below AnalysisSettings::noise_floor.
+//  2. Plateau: with ln eta smoothed by a running median of 3, the bottom of the
+//     curve is its minimum; eta_newtonian is the median viscosity of the points
+//     before the onset that lie within 3 sigma of that minimum.
+//  3. Onset: the first point after the minimum where the smoothed viscosity
+//     exceeds onset_factor x eta_newtonian; onset_stress is interpolated in
+//     log-log, onset_rate = onset_stress / (onset_factor eta_newtonian).
+//  4. Window (automatic): from the top min_window_points points of the ramp,
+//     the largest window reaching down towards the onset in which a quadratic
+//     term of the log-log fit stays within 2 standard errors (the power law is
+//     straight within the noise). A user window replaces it.
+//  5. n and its interval: b with its standard error (scaled up by sqrt(chi2/dof)
+//     when the scatter exceeds sigma), Student t quantile with m - 2 degrees of
+//     freedom; n_low = 1/(b + t se) - 1, n_high = 1/(b - t se) - 1, or infinity
+//     when the bound is <= 0.
+//  6. Regime: newtonian (no onset in the ramp), unresolved (onset but fewer than
+//     3 points above it), dst (a jammed simulation point, or b <= 0: the rate does
+//     not increase with stress, or n > dst_n_cap), else cst.
+#include <cstddef>
+#include <limits>
+#include <string_view>
+#include <vector>
+
+#include "analysis/analysis_settings.hpp"
+#include "analysis/flow_curve.hpp"
+
+namespace dilatant::analysis {
+
+enum class Regime { Newtonian, Cst, Dst, Unresolved };
+enum class DstEvidence { None, RateNotIncreasing, ExponentAboveCap, Jammed };
+
+std::string_view regime_name(Regime r);  // newtonian | cst | dst | unresolved
+std::string_view dst_evidence_name(
+    DstEvidence e);  // "" | rate_not_increasing | n_above_cap | jammed
+
+inline constexpr double kNotFound = std::numeric_limits<double>::quiet_NaN();
+
+struct CurveResult {
+  double eta_newtonian = kNotFound;
+  double onset_stress = kNotFound;
+  double onset_rate = kNotFound;
+  double n = kNotFound;  // +inf when the rate does not increase in the window
+  double n_low = kNotFound;
+  double n_high = kNotFound;
+  double n_sigma = kNotFound;      // standard error of n (delta method: se_b / b^2)
+  double consistency = kNotFound;  // K of eta = K gamma_dot^n, in the curve's units
+  double window_stress_low = kNotFound;
+  double window_stress_high = kNotFound;
+  std::size_t window_points = 0;
+  bool window_from_user = false;
+  double noise = kNotFound;  // typical relative noise of the shear rate used
+  Regime regime = Regime::Newtonian;
+  DstEvidence dst_evidence = DstEvidence::None;
+  std::vector<bool> in_window;  // per point of the curve
+};
+
+// Throws InputError when the curve's user window holds fewer than 3 fit points.
+CurveResult analyse_curve(const FlowCurve& curve, const AnalysisSettings& settings);
+
+}  // namespace dilatant::analysis

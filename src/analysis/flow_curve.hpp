@@ -1,0 +1,45 @@
+#pragma once
+// A flow curve as the analysis sees it: the points of one stress ramp (or of
+// one simulated (phi, mu0) series), labelled with the sample and the volume
+// fraction. Independent of the engine: rheometer files and simulation tables
+// both end up here (docs/analysis.md).
+//
+// Units are those of the source, never mixed within one analysis:
+//   rheometer files  stress Pa, rate 1/s, viscosity Pa s (converted on reading)
+//   simulations      the paper's units: stress eta_f^2/(rho_p R^2),
+//                    rate eta_f/(rho_p R^2), viscosity eta_f
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace dilatant::analysis {
+
+enum class UnitSystem { SI, Paper };
+
+struct FlowPoint {
+  double shear_stress = 0.0;
+  double shear_rate = 0.0;      // 0 for a jammed simulation point
+  double viscosity = 0.0;       // NaN for a jammed simulation point
+  double shear_rate_err = 0.0;  // one standard error; 0 = not known (rheometer data)
+  bool valid = true;            // false: outside the model's validity; drawn, never fitted
+  bool jammed = false;          // the simulated cell stopped: evidence of DST
+  std::size_t line = 0;         // line in the source file, for messages
+};
+
+// A fit window chosen by the user, in stress units of the curve.
+struct StressWindow {
+  double low = 0.0;
+  double high = 0.0;
+  std::string origin;  // where it was set, e.g. "manifest.toml:7: curve[2].window_stress"
+};
+
+struct FlowCurve {
+  std::string source;  // the file the points come from
+  std::string sample;  // coating (rheometer) or "mu0=<value>" (simulation)
+  double phi = 0.0;
+  std::optional<StressWindow> window;
+  std::vector<FlowPoint> points;  // ascending shear stress
+};
+
+}  // namespace dilatant::analysis

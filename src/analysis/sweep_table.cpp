@@ -1,0 +1,162 @@
+// A simulation sweep's flowcurves.csv (analysis_input.hpp), grouped into one
+// flow curve per (phi, mu0).
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <optional>
+
+#include "analysis/analysis_input.hpp"
+#include "analysis/delimited_text.hpp"
+#include "io/input_error.hpp"
+
+namespace dilatant::analysis {
+namespace {
+
+using namespace std::string_view_literals;
+
+constexpr std::array kRequired = {"phi"sv,       "mu0"sv,   "shear_stress"sv,
+                                  "gamma_dot"sv, "valid"sv, "jammed"sv};
+
+struct Columns {
+  std::size_t phi, mu0, stress, rate, valid, jammed;
+  std::optional<std::size_t> rate_err;
+  std::size_t count;
+};
+
+class SweepReader {
+ public:
+  explicit SweepReader(std::string name) : name_(std::move(name)) {}
+
+  [[noreturn]] void fail(std::size_t line, const std::string& what) const {
+    throw InputError(fmt::format("{}:{}: {}", name_, line, what));
+  }
+
+  Columns header(const std::string& line) const {
+    const auto fields = split_fields(line, ',');
+    auto find = [&](std::string_view name) -> std::optional<std::size_t> {
+      const auto it = std::find(fields.begin(), fields.end(), name);
+      if (it == fields.end()) return std::nullopt;
+      return static_cast<std::size_t>(it - fields.begin());
+    };
+    for (const auto name : kRequired)
+      if (!find(name))
+        fail(1, fmt::format("missing column '{}' (a sweep table needs phi, mu0, shear_stress, "
+                            "gamma_dot, valid, jammed)",
+                            name));
+    return Columns{*find("phi"),   *find("mu0"),    *find("shear_stress"), *find("gamma_dot"),
+                   *find("valid"), *find("jammed"), find("gamma_dot_err"), fields.size()};
+  }
+
+  double number(std::size_t line, const std::vector<std::string>& f, std::size_t column,
+                std::string_view name) const {
+    const auto v = parse_number(f[column]);
+    if (f[column].empty()) fail(line, fmt::format("column '{}': empty field", name));
+    if (!v) fail(line, fmt::format("column '{}': '{}' is not a number", name, f[column]));
+    if (!std::isfinite(*v))
+      fail(line, fmt::format("column '{}': '{}' is not a finite number", name, f[column]));
+    return *v;
+  }
+
+  bool boolean(std::size_t line, const std::vector<std::string>& f, std::size_t column,
+               std::string_view name) const {
+    std::string v = f[column];
+    std::transform(v.begin(), v.end(), v.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (v == "true" || v == "1") return true;
+    if (v == "false" || v == "0") return false;
+    fail(line, fmt::format("column '{}': '{}' is not true or false", name, f[column]));
+  }
+
+  struct Row {
+    double phi, mu0;
+    FlowPoint point;
+  };
+
+  Row row(std::size_t line, const std::string& text, const Columns& c) const {
+    const auto f = split_fields(text, ',');
+    if (f.size() != c.count)
+      fail(line, fmt::format("expected {} fields (as in the header), got {}", c.count, f.size()));
+    Row r{};
+    r.phi = number(line, f, c.phi, "phi");
+    if (!(r.phi > 0.0 && r.phi < 0.74))
+      fail(line, fmt::format("column 'phi': {} must be in (0, 0.74)", r.phi));
+    r.mu0 = number(line, f, c.mu0, "mu0");
+    if (r.mu0 < 0.0) fail(line, fmt::format("column 'mu0': {} must be >= 0", r.mu0));
+    FlowPoint& p = r.point;
+    p.line = line;
+    p.shear_stress = number(line, f, c.stress, "shear_stress");
+    if (!(p.shear_stress > 0.0))
+      fail(line, fmt::format("column 'shear_stress': {} must be > 0", p.shear_stress));
+    p.valid = boolean(line, f, c.valid, "valid");
+    p.jammed = boolean(line, f, c.jammed, "jammed");
+    p.shear_rate = number(line, f, c.rate, "gamma_dot");
+    if (p.jammed ? p.shear_rate < 0.0 : !(p.shear_rate > 0.0))
+      fail(line, fmt::format("column 'gamma_dot': {} must be > 0 for a flowing row ({})",
+                             p.shear_rate, p.jammed ? "or 0 when jammed" : "jammed = false"));
+    if (c.rate_err && !f[*c.rate_err].empty()) {
+      p.shear_rate_err = number(line, f, *c.rate_err, "gamma_dot_err");
+      if (p.shear_rate_err < 0.0)
+        fail(line, fmt::format("column 'gamma_dot_err': {} must be >= 0", p.shear_rate_err));
+    }
+    p.viscosity = p.shear_rate > 0.0 ? p.shear_stress / p.shear_rate
+                                     : std::numeric_limits<double>::quiet_NaN();
+    return r;
+  }
+
+ private:
+  std::string name_;
+};
+
+}  // namespace
+
+AnalysisInput read_sweep_table(const std::filesystem::path& table) {
+  const std::string name = table.string();
+  const auto lines = read_text_lines(table);
+  SweepReader reader(name);
+  if (lines.empty() || is_blank(lines[0])) reader.fail(1, "empty file: expected a header");
+  const Columns columns = reader.header(lines[0]);
+
+  AnalysisInput input;
+  input.source = name;
+  input.kind = InputKind::SweepTable;
+  input.units = UnitSystem::Paper;
+  std::map<std::pair<double, double>, std::size_t> curve_of;  // (phi, mu0) -> curve
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    if (is_blank(lines[i])) continue;
+    const auto r = reader.row(i + 1, lines[i], columns);
+    auto [it, added] = curve_of.try_emplace({r.phi, r.mu0}, input.curves.size());
+    if (added) {
+      FlowCurve c;
+      c.source = name;
+      c.sample = fmt::format("mu0={}", r.mu0);
+      c.phi = r.phi;
+      input.curves.push_back(std::move(c));
+      if (std::find(input.samples.begin(), input.samples.end(), input.curves.back().sample) ==
+          input.samples.end())
+        input.samples.push_back(input.curves.back().sample);
+    }
+    input.curves[it->second].points.push_back(r.point);
+  }
+  if (input.curves.empty()) reader.fail(1, "no data rows after the header");
+  // Simulations are independent runs, listed in any order: sort by stress. Two
+  // runs at the same stress of one curve would be two answers for one point.
+  for (auto& c : input.curves) {
+    std::sort(c.points.begin(), c.points.end(),
+              [](const auto& a, const auto& b) { return a.shear_stress < b.shear_stress; });
+    for (std::size_t k = 1; k < c.points.size(); ++k)
+      if (c.points[k].shear_stress == c.points[k - 1].shear_stress)
+        reader.fail(
+            c.points[k].line,
+            fmt::format("shear_stress {} repeats line {} for phi {}, mu0 {} (one run "
+                        "per point of a flow curve)",
+                        c.points[k].shear_stress, c.points[k - 1].line, c.phi, c.sample.substr(4)));
+  }
+  return input;
+}
+
+}  // namespace dilatant::analysis

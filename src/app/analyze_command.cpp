@@ -1,0 +1,182 @@
+#include "app/analyze_command.hpp"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+
+#include "analysis/analysis.hpp"
+#include "analysis/analysis_input.hpp"
+#include "analysis/report_files.hpp"
+#include "io/input_error.hpp"
+
+extern char** environ;
+
+namespace dilatant {
+
+CLI::App* add_analyze_command(CLI::App& app, AnalyzeCommandArgs& args) {
+  CLI::App* cmd = app.add_subcommand(
+      "analyze",
+      "Rheometer analysis (paper Fig. 3): per flow curve the Newtonian viscosity, the onset of "
+      "thickening, the Ostwald-de Waele exponent n (eta ~ gamma_dot^n) with its confidence "
+      "interval and the regime (newtonian, cst, dst); per sample the fit n - 1 = A x^-alpha, "
+      "x = (phi_max - phi)/phi_max, phi_max given or fitted; the master-curve collapse of all "
+      "samples. INPUT is a manifest (TOML: [[curve]] file, sample, phi; [samples.NAME] "
+      "phi_max) or a sweep's flowcurves.csv (curves by phi and mu0). Writes curves.csv, "
+      "points.csv, fits.json and plots (PNG, SVG) to --out. See docs/analysis.md.");
+  cmd->add_option("input", args.input, "Manifest (.toml) or flowcurves.csv")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("-o,--out", args.out, "Output folder (default: out/analysis/<input name>)");
+  cmd->add_flag("--no-plots", args.no_plots, "Write the tables only, no plots");
+  cmd->add_flag("-q,--quiet", args.quiet, "No summary on stdout");
+  cmd->add_option("--python", args.python, "Python with matplotlib that draws the plots")
+      ->capture_default_str();
+  cmd->add_option("--plot-script", args.plot_script,
+                  "The plotting script (default: scripts/analysis_plots.py of this source tree)");
+  auto& s = args.settings;
+  cmd->add_option("--onset-factor", s.onset_factor,
+                  "Thickening starts where eta exceeds this x the Newtonian viscosity (> 1)")
+      ->capture_default_str();
+  cmd->add_option("--dst-n-cap", s.dst_n_cap, "A curve with n above this counts as DST (> 0)")
+      ->capture_default_str();
+  cmd->add_option("--min-window-points", s.min_window_points,
+                  "Points the automatic thickening window starts from (>= 3)")
+      ->capture_default_str();
+  cmd->add_option("--confidence", s.confidence, "Level of the intervals n_low..n_high, in (0, 1)")
+      ->capture_default_str();
+  return cmd;
+}
+
+namespace {
+
+void check_settings(const analysis::AnalysisSettings& s) {
+  auto fail = [](std::string_view option, double value, std::string_view what) {
+    throw InputError(fmt::format("{} = {}: {}", option, value, what));
+  };
+  if (!(s.onset_factor > 1.0)) fail("--onset-factor", s.onset_factor, "must be > 1");
+  if (!(s.dst_n_cap > 0.0)) fail("--dst-n-cap", s.dst_n_cap, "must be > 0");
+  if (s.min_window_points < 3) fail("--min-window-points", s.min_window_points, "must be >= 3");
+  if (!(s.confidence > 0.0 && s.confidence < 1.0))
+    fail("--confidence", s.confidence, "must be in (0, 1)");
+}
+
+std::string last_line(const std::string& text) {
+  auto end = text.find_last_not_of(" \n\r\t");
+  if (end == std::string::npos) return "";
+  const auto start = text.rfind('\n', end);
+  return text.substr(start == std::string::npos ? 0 : start + 1,
+                     end - (start == std::string::npos ? 0 : start + 1) + 1);
+}
+
+// Runs `python script dir` without a shell; its output is captured so that a
+// failure is reported in one line. Returns "" on success, else why it failed.
+std::string draw_plots(const std::string& python, const std::string& script,
+                       const std::filesystem::path& dir) {
+  if (!std::filesystem::is_regular_file(script))
+    return fmt::format("plot script {} not found", script);
+  int fds[2];
+  if (pipe(fds) != 0) return fmt::format("pipe: {}", std::strerror(errno));
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, fds[1], STDERR_FILENO);
+  posix_spawn_file_actions_addclose(&actions, fds[0]);
+  posix_spawn_file_actions_addclose(&actions, fds[1]);
+  std::string dir_arg = dir.string(), python_arg = python, script_arg = script;
+  char* argv[] = {python_arg.data(), script_arg.data(), dir_arg.data(), nullptr};
+  pid_t pid = 0;
+  // posix_spawnp: a bare name such as --python python3 is looked up in PATH.
+  const int spawned = posix_spawnp(&pid, python.c_str(), &actions, nullptr, argv, environ);
+  posix_spawn_file_actions_destroy(&actions);
+  close(fds[1]);
+  if (spawned != 0) {
+    close(fds[0]);
+    return fmt::format("cannot run {}: {}", python, std::strerror(spawned));
+  }
+  std::string output;
+  char buffer[4096];
+  for (ssize_t got; (got = read(fds[0], buffer, sizeof buffer)) != 0;) {
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) break;
+    output.append(buffer, static_cast<std::size_t>(got));
+  }
+  close(fds[0]);
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
+  const std::string why = last_line(output);
+  return fmt::format("{} {} failed{}{}", python, script, why.empty() ? "" : ": ", why);
+}
+
+std::string with_error(const analysis::Estimate& e, const char* format) {
+  const std::string value = fmt::format(fmt::runtime(format), e.value);
+  if (!std::isfinite(e.err)) return value;
+  return value + " ± " + fmt::format("{:.2g}", e.err);
+}
+
+void print_summary(const analysis::AnalysisReport& r, const std::filesystem::path& out) {
+  std::cout << fmt::format("dilatant: analysed {} flow curves of {} samples; results in {}\n",
+                           r.curves.size(), r.samples.size(), out.string());
+  std::cout << fmt::format("  {:<12} {:>6} {:>4} {:>4}  {:<22} {:<18} {:<16}\n", "sample", "curves",
+                           "cst", "dst", "phi_max", "A", "alpha");
+  for (const auto& s : r.samples) {
+    std::string phi_max = "-", a = "-", alpha = "-";
+    if (const auto& f = s.fit.fit) {
+      phi_max = s.phi_max_given ? fmt::format("{} (given)", *s.phi_max_given)
+                                : with_error(f->phi_max[0], "{:.4f}");
+      a = with_error(f->A, "{:.3g}");
+      alpha = with_error(f->alpha, "{:.3g}");
+    } else if (s.phi_max_given) {
+      phi_max = fmt::format("{} (given)", *s.phi_max_given);
+    }
+    std::cout << fmt::format("  {:<12} {:>6} {:>4} {:>4}  {:<22} {:<18} {:<16}\n", s.sample,
+                             s.curves, s.cst_curves, s.dst_curves, phi_max, a, alpha);
+  }
+  if (const auto& f = r.collapse.fit.fit) {
+    std::cout << fmt::format(
+        "  collapse of {} samples: A = {}, alpha = {}, chi2/dof = {:.3g}, rms deviation "
+        "{:.3g} decades\n",
+        r.collapse.samples.size(), with_error(f->A, "{:.3g}"), with_error(f->alpha, "{:.3g}"),
+        f->chi2_per_dof(), f->rms_log10_deviation);
+  } else {
+    std::cout << fmt::format("  no collapse: {}\n", r.collapse.fit.why_not);
+  }
+}
+
+}  // namespace
+
+int execute_analyze_command(const AnalyzeCommandArgs& args) {
+  check_settings(args.settings);
+  const std::filesystem::path input(args.input);
+  const std::filesystem::path out = args.out.empty()
+                                        ? std::filesystem::path("out") / "analysis" / input.stem()
+                                        : std::filesystem::path(args.out);
+  const analysis::AnalysisReport report =
+      analysis::analyse(analysis::load_analysis_input(input), args.settings);
+  analysis::write_report_files(report, out);
+  if (!args.no_plots) {
+#ifdef DILATANT_PLOT_SCRIPT
+    const std::string script = args.plot_script.empty() ? DILATANT_PLOT_SCRIPT : args.plot_script;
+#else
+    const std::string script = args.plot_script;
+#endif
+    const std::string failure = draw_plots(args.python, script, out);
+    if (!failure.empty())
+      std::cerr << fmt::format(
+          "dilatant: plots skipped ({}); curves.csv, points.csv and fits.json are complete\n",
+          failure);
+  }
+  if (!args.quiet) print_summary(report, out);
+  return 0;
+}
+
+}  // namespace dilatant

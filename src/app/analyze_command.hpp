@@ -1,0 +1,27 @@
+#pragma once
+// `dilatant analyze INPUT [--out DIR] [--no-plots] [options]`: the rheometer
+// analysis (docs/analysis.md) of a manifest of rheometer files or of a sweep's
+// flowcurves.csv. The numbers come from the library (src/analysis); the plots
+// are drawn from the written files by scripts/analysis_plots.py.
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "analysis/analysis_settings.hpp"
+
+namespace dilatant {
+
+struct AnalyzeCommandArgs {
+  std::string input;
+  std::string out;  // empty: out/analysis/<input stem>
+  bool no_plots = false;
+  bool quiet = false;
+  std::string python = "/usr/bin/python3";  // Debian's, with matplotlib
+  std::string plot_script;                  // empty: the one of this source tree
+  analysis::AnalysisSettings settings;
+};
+
+CLI::App* add_analyze_command(CLI::App& app, AnalyzeCommandArgs& args);
+// Returns the process exit code; throws InputError on bad input.
+int execute_analyze_command(const AnalyzeCommandArgs& args);
+
+}  // namespace dilatant

@@ -1,0 +1,109 @@
+// A simulation sweep's flowcurves.csv: grouping into curves per (phi, mu0),
+// invalid rows drawn but not fitted, jammed rows as DST evidence, and errors.
+//
+// tests/analysis/data/flowcurves.csv is a small hand-made sweep in the paper's
+// units: curves (phi, mu0) = (0.55, 0.1), (0.58, 0.1), (0.55, 0.4) generated with
+// n = 1, 2, 1.5 above a sharp onset, eta_N = 40, 80, 40 and 2% rate noise (the
+// rows' gamma_dot_err); their lambda = 1 rows are marked valid = false and carry a
+// rate 1.8 x too high; (0.58, 0.4) jams from lambda 8 on. One row is out of order.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "analysis/analysis_input.hpp"
+#include "analysis/curve_analysis.hpp"
+#include "io/io_test_files.hpp"
+
+namespace dilatant::analysis {
+namespace {
+
+const std::filesystem::path kSweep =
+    std::filesystem::path(DILATANT_SOURCE_DIR) / "tests/analysis/data/flowcurves.csv";
+
+TEST(SweepTable, GroupsRowsIntoOneCurvePerPhiAndMu0) {
+  const AnalysisInput in = load_analysis_input(kSweep);
+  EXPECT_EQ(in.kind, InputKind::SweepTable);
+  EXPECT_EQ(in.units, UnitSystem::Paper);
+  EXPECT_EQ(in.samples, (std::vector<std::string>{"mu0=0.1", "mu0=0.4"}));
+  ASSERT_EQ(in.curves.size(), 4u);
+  for (const auto& c : in.curves) {
+    ASSERT_EQ(c.points.size(), 7u) << c.sample << " phi " << c.phi;
+    for (std::size_t k = 1; k < c.points.size(); ++k)
+      EXPECT_LT(c.points[k - 1].shear_stress, c.points[k].shear_stress) << "sorted by stress";
+    EXPECT_FALSE(c.points.front().valid) << "the lambda = 1 row is outside the model's validity";
+  }
+  const FlowCurve& jamming = in.curves[3];
+  EXPECT_EQ(jamming.sample, "mu0=0.4");
+  EXPECT_EQ(jamming.phi, 0.58);
+  EXPECT_TRUE(jamming.points.back().jammed);
+  EXPECT_EQ(jamming.points.back().shear_rate, 0.0);
+  EXPECT_TRUE(std::isnan(jamming.points.back().viscosity));
+  EXPECT_DOUBLE_EQ(in.curves[0].points[1].shear_rate_err, 0.0019);
+}
+
+TEST(SweepTable, GivesNPerPhiAndMu0AndTreatsJammingAsDst) {
+  const AnalysisInput in = load_analysis_input(kSweep);
+  const double generated_n[] = {1.0, 2.0, 1.5};
+  const double generated_eta[] = {40.0, 80.0, 40.0};
+  for (int k = 0; k < 3; ++k) {
+    const CurveResult r = analyse_curve(in.curves[k], AnalysisSettings{});
+    EXPECT_EQ(r.regime, Regime::Cst) << k;
+    // The 95% interval holds the generating exponent.
+    EXPECT_LE(r.n_low, generated_n[k]) << k;
+    EXPECT_GE(r.n_high, generated_n[k]) << k;
+    // Two or three plateau points with 2% noise: within 5%. Were the invalid
+    // row used, the plateau would sit near 22.6 or 45 instead.
+    EXPECT_NEAR(r.eta_newtonian / generated_eta[k], 1.0, 0.05) << k;
+    EXPECT_FALSE(r.in_window.front());
+    EXPECT_NEAR(r.noise, 0.02, 0.002) << "the rows' error bars";
+  }
+  const CurveResult jammed = analyse_curve(in.curves[3], AnalysisSettings{});
+  EXPECT_EQ(jammed.regime, Regime::Dst);
+  EXPECT_EQ(jammed.dst_evidence, DstEvidence::Jammed);
+}
+
+struct BadSweep {
+  std::string name;
+  std::string text;
+  int line;
+  std::string problem;
+};
+
+constexpr const char* kHeader = "phi,mu0,shear_stress,gamma_dot,gamma_dot_err,eta,valid,jammed\n";
+
+std::vector<BadSweep> bad_sweeps() {
+  const std::string h = kHeader;
+  return {
+      {"MissingColumn", "phi,mu0,shear_stress,gamma_dot,valid\n0.5,0.1,1,1,true\n", 1,
+       "missing column 'jammed'"},
+      {"NoRows", h, 1, "no data rows"},
+      {"ZeroRateWithoutJamming", h + "0.5,0.1,1,0,0,,true,false\n", 2, "must be > 0"},
+      {"BadBoolean", h + "0.5,0.1,1,1,0,1,yes,false\n", 2, "'yes' is not true or false"},
+      {"TextInANumber", h + "0.5,0.1,1,1,0,1,true,false\n0.5,0.1,x,1,0,1,true,false\n", 3,
+       "'x' is not a number"},
+      {"RepeatedStress", h + "0.5,0.1,1,1,0,1,true,false\n0.5,0.1,1,2,0,1,true,false\n", 3,
+       "repeats line 2"},
+      {"WrongFieldCount", h + "0.5,0.1,1,1,0,1,true\n", 2, "expected 8 fields"},
+      {"PhiOutOfRange", h + "0.8,0.1,1,1,0,1,true,false\n", 2, "must be in (0, 0.74)"},
+      {"NaN", h + "0.5,0.1,nan,1,0,1,true,false\n", 2, "not a finite number"},
+  };
+}
+
+class SweepTableBad : public ::testing::TestWithParam<BadSweep> {};
+
+TEST_P(SweepTableBad, IsRefusedWithFileLineAndProblem) {
+  const BadSweep& c = GetParam();
+  test::TempDir dir;
+  const auto file = dir.write("flowcurves.csv", c.text);
+  const std::string message = test::input_error_message([&] { read_sweep_table(file); });
+  EXPECT_EQ(message.rfind(file.string() + ":" + std::to_string(c.line) + ": ", 0), 0u) << message;
+  EXPECT_NE(message.find(c.problem), std::string::npos) << message;
+}
+
+INSTANTIATE_TEST_SUITE_P(SweepTable, SweepTableBad, ::testing::ValuesIn(bad_sweeps()),
+                         [](const auto& p) { return p.param.name; });
+
+}  // namespace
+}  // namespace dilatant::analysis

@@ -1,0 +1,154 @@
+// End-to-end tests of `dilatant analyze` (docs/analysis.md): the real executable
+// on the shipped example, on a sweep's flowcurves.csv, without a usable Python,
+// and on malformed input (exit 2, one line naming file and line, no results).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/cli_runner.hpp"
+
+namespace dilatant {
+namespace {
+
+namespace fs = std::filesystem;
+using test::read_text;
+
+const fs::path kSource = DILATANT_SOURCE_DIR;
+const std::vector<std::string> kTables = {"curves.csv", "points.csv", "fits.json"};
+const std::vector<std::string> kPlots = {"flow_curves", "n_vs_phi", "collapse"};
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);) out.push_back(l);
+  return out;
+}
+
+bool matplotlib_available() {
+  return std::system("/usr/bin/python3 -c 'import matplotlib, numpy' >/dev/null 2>&1") == 0;
+}
+
+TEST(AnalyzeCommand, ExampleManifestGivesTablesPlotsAndASummary) {
+  test::CliDir dir;
+  const fs::path out = dir.path() / "out";
+  const auto r = dir.run(
+      {"analyze", (kSource / "examples/analysis/manifest.toml").string(), "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const auto& name : kTables) EXPECT_TRUE(fs::is_regular_file(out / name)) << name;
+  EXPECT_EQ(lines(read_text(out / "curves.csv")).size(), 1u + 28u);
+  const auto fits = nlohmann::json::parse(read_text(out / "fits.json"));
+  EXPECT_NEAR(fits["samples"]["D"]["phi_max"].get<double>(), 0.545, 0.005);
+  EXPECT_NE(r.out.find("collapse of 4 samples"), std::string::npos) << r.out;
+  if (matplotlib_available()) {
+    EXPECT_EQ(r.err, "");
+    for (const auto& plot : kPlots)
+      for (const char* ext : {".png", ".svg"})
+        EXPECT_GT(fs::file_size(out / (plot + ext)), 1000u) << plot << ext;
+  } else {
+    EXPECT_NE(r.err.find("plots skipped"), std::string::npos) << r.err;
+  }
+  for (const auto& e : fs::directory_iterator(out))
+    EXPECT_NE(e.path().extension(), ".part") << e.path();
+}
+
+TEST(AnalyzeCommand, WithoutPythonThePlotsAreSkippedAndTheTablesWritten) {
+  test::CliDir dir;
+  const fs::path out = dir.path() / "out";
+  const auto r = dir.run({"analyze", (kSource / "examples/analysis/manifest.toml").string(),
+                          "--out", out.string(), "--python", "/nonexistent/python3", "-q"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("plots skipped"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("/nonexistent/python3"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out, "") << "--quiet";
+  for (const auto& name : kTables) EXPECT_TRUE(fs::is_regular_file(out / name)) << name;
+  EXPECT_FALSE(fs::exists(out / "collapse.png"));
+}
+
+TEST(AnalyzeCommand, ASweepTableGivesNPerPhiAndMu0) {
+  test::CliDir dir;
+  const fs::path out = dir.path() / "out";
+  const auto r = dir.run({"analyze", (kSource / "tests/analysis/data/flowcurves.csv").string(),
+                          "--out", out.string(), "--no-plots"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  const auto rows = lines(read_text(out / "curves.csv"));
+  ASSERT_EQ(rows.size(), 1u + 4u);
+  EXPECT_EQ(rows[1].rfind("mu0=0.1,0.55,", 0), 0u) << rows[1];
+  EXPECT_EQ(rows[4].rfind("mu0=0.4,0.58,", 0), 0u) << rows[4];
+  EXPECT_NE(rows[4].find(",dst,jammed,"), std::string::npos) << rows[4];
+  const auto fits = nlohmann::json::parse(read_text(out / "fits.json"));
+  EXPECT_EQ(fits["units"]["viscosity"], "eta_f");
+  EXPECT_EQ(fits["kind"], "sweep_table");
+}
+
+struct BadInput {
+  std::string name;
+  std::string data;  // written to data.csv, listed in the manifest
+  int line;          // of data.csv in the message
+  std::string problem;
+};
+
+class AnalyzeCommandBad : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(AnalyzeCommandBad, ExitsWith2AndOneLineNamingFileAndLine) {
+  const BadInput& c = GetParam();
+  test::CliDir dir;
+  const fs::path data = dir.write("data.csv", c.data);
+  const fs::path manifest =
+      dir.write("m.toml", "[[curve]]\nfile = \"data.csv\"\nsample = \"A\"\nphi = 0.5\n");
+  const fs::path out = dir.path() / "out";
+  const auto r = dir.run({"analyze", manifest.string(), "--out", out.string()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(data.string() + ":" + std::to_string(c.line) + ": "), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find(c.problem), std::string::npos) << r.err;
+  for (const auto& name : kTables) EXPECT_FALSE(fs::exists(out / name)) << name;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    AnalyzeCommand, AnalyzeCommandBad,
+    ::testing::Values(
+        BadInput{"MissingColumn", "Shear Rate [1/s],Time [s]\n1,1\n2,2\n3,3\n", 1,
+                 "missing column"},
+        BadInput{"TextInANumber", "shear_rate,shear_stress\n1,1\n2,two\n3,3\n", 3,
+                 "'two' is not a number"},
+        BadInput{"EmptyFile", "", 1, "empty file"},
+        BadInput{"SinglePoint", "shear_rate,shear_stress\n1,1\n", 2, "only 1 data point"},
+        BadInput{"UnsortedData", "shear_rate,shear_stress\n1,1\n3,3\n2,2\n", 4,
+                 "does not continue"},
+        BadInput{"NaN", "shear_rate,shear_stress\n1,1\nNaN,2\n3,3\n", 3, "not a finite number"}),
+    [](const auto& p) { return p.param.name; });
+
+TEST(AnalyzeCommand, RefusesAnInputThatIsNeitherAManifestNorASweepAndBadOptions) {
+  test::CliDir dir;
+  const fs::path csv = dir.write("rheo.csv", "shear_rate,shear_stress\n1,1\n2,2\n3,3\n");
+  auto r = dir.run({"analyze", csv.string(), "--out", (dir.path() / "out").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find(csv.string() + ":1: "), std::string::npos) << r.err;
+  r = dir.run({"analyze", (kSource / "examples/analysis/manifest.toml").string(), "--onset-factor",
+               "1.0", "--out", (dir.path() / "out").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--onset-factor"), std::string::npos) << r.err;
+  r = dir.run({"analyze", (dir.path() / "missing.toml").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("missing.toml"), std::string::npos) << r.err;
+}
+
+TEST(AnalyzeCommand, HelpDescribesInputsAndOutputs) {
+  test::CliDir dir;
+  const auto r = dir.run({"analyze", "--help"});
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* word : {"manifest", "flowcurves.csv", "--out", "fits.json", "--no-plots"})
+    EXPECT_NE(r.out.find(word), std::string::npos) << word;
+}
+
+}  // namespace
+}  // namespace dilatant

@@ -1,0 +1,65 @@
+#pragma once
+// Running the real `dilatant` executable from a test: a private temporary
+// directory (tests/io/io_test_files.hpp) that can also run the executable inside
+// it, capturing its exit code, stdout and stderr.
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "io/io_test_files.hpp"
+
+namespace dilatant::test {
+
+inline std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Single-quoted for /bin/sh.
+inline std::string shell_quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) {
+    if (c == '\'') {
+      q.append("'\\''");
+    } else {
+      q.push_back(c);
+    }
+  }
+  q.push_back('\'');
+  return q;
+}
+
+struct RunResult {
+  int exit_code = -1;  // -1: killed by a signal
+  std::string out;
+  std::string err;
+};
+
+class CliDir : public TempDir {
+ public:
+  // Runs the dilatant executable with `args`; stdout and stderr are captured.
+  RunResult run(const std::vector<std::string>& args) const {
+    const std::filesystem::path out = path() / "stdout.txt";
+    const std::filesystem::path err = path() / "stderr.txt";
+    std::string command = shell_quote(DILATANT_EXECUTABLE);
+    for (const auto& a : args) command.append(" ").append(shell_quote(a));
+    command.append(" >").append(shell_quote(out.string()));
+    command.append(" 2>").append(shell_quote(err.string()));
+    command.append(" </dev/null");
+    const int status = std::system(command.c_str());
+    RunResult r;
+    if (status != -1 && WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
+    r.out = read_text(out);
+    r.err = read_text(err);
+    std::filesystem::remove(out);
+    std::filesystem::remove(err);
+    return r;
+  }
+};
+
+}  // namespace dilatant::test
