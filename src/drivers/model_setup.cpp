@@ -18,7 +18,7 @@ FrictionLaw make_friction_law(const FrictionConfig& f, double eta_f) {
 SolverSettings make_solver_settings(const SolverConfig& s) {
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   return SolverSettings{s.tolerance, s.max_iterations, s.freeze_branches_after,
-                        s.threads > 0 ? s.threads : cores};
+                        s.threads > 0 ? s.threads : cores, s.relaxation};
 }
 
 }  // namespace dilatant

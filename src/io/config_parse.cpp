@@ -216,6 +216,9 @@ Config build(const toml::table& root, std::string source, const std::filesystem:
   check(solver, "threads", threads, threads >= 0 && threads <= 1024,
         "must be in [0, 1024] (0 = all cores)");
   c.solver.threads = static_cast<int>(threads);
+  c.solver.relaxation = solver.number("relaxation", c.solver.relaxation);
+  check(solver, "relaxation", c.solver.relaxation,
+        c.solver.relaxation > 0.0 && c.solver.relaxation < 2.0, "must be in (0, 2)");
 
   c.run = read_run(section("run"), has_cell);
   c.source = std::move(source);

@@ -22,8 +22,8 @@ constexpr std::array kParticlesKeys = {"density"sv};
 constexpr std::array kFrictionKeys = {"law"sv, "mu0"sv, "s_c"sv, "s_lim"sv};
 constexpr std::array kFluidKeys = {"lambda"sv, "eta_f"sv};
 constexpr std::array kSolverKeys = {
-    "dt"sv,     "tolerance"sv, "max_iterations"sv, "max_displacement"sv, "freeze_branches_after"sv,
-    "threads"sv};
+    "dt"sv,      "tolerance"sv, "max_iterations"sv, "max_displacement"sv, "freeze_branches_after"sv,
+    "threads"sv, "relaxation"sv};
 constexpr std::array kRunKeys = {"strain"sv,
                                  "time"sv,
                                  "transient_strain"sv,

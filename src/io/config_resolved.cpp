@@ -70,7 +70,8 @@ toml::table to_toml(const Config& c) {
                                  {"max_iterations", c.solver.max_iterations},
                                  {"max_displacement", c.solver.max_displacement},
                                  {"freeze_branches_after", c.solver.freeze_branches_after},
-                                 {"threads", c.solver.threads}});
+                                 {"threads", c.solver.threads},
+                                 {"relaxation", c.solver.relaxation}});
   t.insert("run", toml::table{{"strain", c.run.strain},
                               {"time", c.run.time},
                               {"transient_strain", c.run.transient_strain},

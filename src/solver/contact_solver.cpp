@@ -41,7 +41,7 @@ inline FrictionBranch imposed_branch(const Contact& c, bool frozen) {
 
 template <class Law>
 SweepChange sweep(std::span<Contact> contacts, Bodies& b, const Law& law, double dt,
-                  bool freeze_branches) {
+                  double relaxation, bool freeze_branches) {
   SweepChange change;
   const double inv_dt = 1.0 / dt;
   for (Contact& c : contacts) {
@@ -51,7 +51,9 @@ SweepChange sweep(std::span<Contact> contacts, Bodies& b, const Law& law, double
     const double u_n_free = u_n - c.w_n * c.p_n;
     const Vec3 u_t_free = (u - u_n * c.normal) - c.w_t * c.p_t;
 
-    const double p_n = std::max(0.0, -(u_n_free + c.gap * inv_dt) / c.w_n);
+    // Over-relaxed normal impulse (SOR); the fixed point is Gauss–Seidel's.
+    const double p_n_exact = std::max(0.0, -(u_n_free + c.gap * inv_dt) / c.w_n);
+    const double p_n = std::max(0.0, c.p_n + relaxation * (p_n_exact - c.p_n));
     const double free_slip = u_t_free.norm();
     const TangentialSolution t =
         law.solve(TangentialProblem{free_slip, c.w_t, p_n, dt, c.reduced_radius,
@@ -94,16 +96,18 @@ double round_off_floor_squared(const std::vector<Contact>& contacts, const Bodie
 }
 
 SweepChange sweep_range(std::vector<Contact>& contacts, std::size_t begin, std::size_t end,
-                        Bodies& bodies, const FrictionLaw& law, double dt, bool freeze) {
+                        Bodies& bodies, const FrictionLaw& law, double dt, double relaxation,
+                        bool freeze) {
   std::span<Contact> part(contacts.data() + begin, end - begin);
-  return std::visit([&](const auto& l) { return sweep(part, bodies, l, dt, freeze); }, law);
+  return std::visit([&](const auto& l) { return sweep(part, bodies, l, dt, relaxation, freeze); },
+                    law);
 }
 
 }  // namespace
 
 SweepChange gauss_seidel_sweep(std::vector<Contact>& contacts, Bodies& bodies,
                                const FrictionLaw& law, double dt) {
-  return sweep_range(contacts, 0, contacts.size(), bodies, law, dt, false);
+  return sweep_range(contacts, 0, contacts.size(), bodies, law, dt, 1.0, false);
 }
 
 void WallBlock::update(const std::vector<Contact>& contacts, Bodies& bodies) const {
@@ -134,12 +138,13 @@ SolveReport solve_contacts(std::vector<Contact>& contacts, const SlabPartition& 
   // Two buffers of per-slab sums, by sweep parity: a thread that has finished a
   // sweep may already write the next sweep's sums while another still reads.
   std::vector<SweepChange> partial(2 * static_cast<std::size_t>(n));
+  const double omega = settings.relaxation;
   const auto sweep_slab = [&](int k, int sweep, bool freeze) {
     const auto ks = static_cast<std::size_t>(k);
-    SweepChange ch =
-        sweep_range(contacts, slabs.begin[ks], slabs.wall_begin[ks], bodies, law, dt, freeze);
+    SweepChange ch = sweep_range(contacts, slabs.begin[ks], slabs.wall_begin[ks], bodies, law, dt,
+                                 omega, freeze);
     const SweepChange ch_wall = sweep_range(contacts, slabs.wall_begin[ks], slabs.begin[ks + 1],
-                                            bodies, wall_law, dt, freeze);
+                                            bodies, wall_law, dt, omega, freeze);
     partial[static_cast<std::size_t>((sweep & 1) * n + k)] = {
         ch.change_squared + ch_wall.change_squared, ch.impulse_squared + ch_wall.impulse_squared};
   };

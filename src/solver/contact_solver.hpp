@@ -78,6 +78,9 @@ struct SolverSettings {
   int max_iterations = 1000;
   int freeze_branches_after = 50;  // sweeps before each contact keeps its friction branch
   int threads = 1;                 // threads sharing a sweep (solver/slab_partition.hpp)
+  // Over-relaxation of the normal impulse: p_n += omega (p_n_GS - p_n), kept >= 0.
+  // 1 is plain Gauss–Seidel; the fixed point does not depend on it.
+  double relaxation = 1.0;
 };
 
 struct SolveReport {
