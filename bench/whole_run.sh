@@ -9,7 +9,7 @@
 #                           [--points "thickened viscous coulomb"] [-- extra --set args]
 #
 # --binary runs another build (e.g. an older commit, for before/after tables);
-# a binary without solver.threads gets no thread setting. Run it on a quiet
+# --threads none runs a build that predates solver.threads. Run it on a quiet
 # machine: the wall times are the result.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -44,9 +44,7 @@ trap 'rm -rf "$scratch"' EXIT
 for point in $points; do
   for t in $threads; do
     thread_args=()
-    if "$binary" run --help >/dev/null 2>&1 && grep -q threads src/io/config_reader.cpp; then
-      thread_args=(--set "solver.threads=$t")
-    fi
+    [[ "$t" == none ]] || thread_args=(--set "solver.threads=$t")
     echo "=== $label $point threads=$t strain=$strain ($(uptime | sed 's/.*load average: /load /'))"
     "$binary" run "bench/configs/$point.toml" --out "$scratch/$point-t$t" --quiet \
       --set "run.strain=$strain" "${thread_args[@]}" "${extra[@]}"

@@ -1,5 +1,7 @@
 #include "detection/contact_detector.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -76,11 +78,11 @@ void ContactDetector::build_cells(const World& world, double cell_size) {
     cell_body_[fill[body_cell_[i]]++] = static_cast<std::int32_t>(i);
 }
 
-void ContactDetector::add_pair_contacts(const World& world, double margin,
-                                        std::vector<Contact>& contacts) {
+void ContactDetector::add_pair_contacts(const World& world, double margin, std::size_t i,
+                                        std::vector<Contact>& contacts) const {
   const Bodies& b = world.bodies;
   std::array<int, 27> neighbours{};
-  for (std::size_t i = 0; i < b.size(); ++i) {
+  {
     const int ci = body_cell_[i];
     const int cx = ci % n_cells_[0], cy = (ci / n_cells_[0]) % n_cells_[1],
               cz = ci / (n_cells_[0] * n_cells_[1]);
@@ -126,13 +128,27 @@ void ContactDetector::add_pair_contacts(const World& world, double margin,
   }
 }
 
-void ContactDetector::detect(const World& world, double margin, std::vector<Contact>& contacts) {
+void ContactDetector::detect(const World& world, double margin, std::vector<Contact>& contacts,
+                             int threads) {
   contacts.clear();
   const Bodies& b = world.bodies;
   double r_max = 0.0;
   for (double r : b.radius) r_max = std::max(r_max, r);
   build_cells(world, 2.0 * r_max + margin);
-  add_pair_contacts(world, margin, contacts);
+  per_thread_.resize(static_cast<std::size_t>(std::max(1, threads)));
+  for (auto& local : per_thread_) local.clear();  // OpenMP may start fewer threads
+  const auto n = static_cast<std::int64_t>(b.size());
+#pragma omp parallel num_threads(std::max(1, threads)) if (threads > 1)
+  {
+    std::vector<Contact>& local = per_thread_[static_cast<std::size_t>(omp_get_thread_num())];
+    // Static schedule: thread t gets the t-th block of spheres, so joining the
+    // blocks in thread order keeps the serial order.
+#pragma omp for schedule(static)
+    for (std::int64_t i = 0; i < n; ++i) {
+      add_pair_contacts(world, margin, static_cast<std::size_t>(i), local);
+    }
+  }
+  for (const auto& local : per_thread_) contacts.insert(contacts.end(), local.begin(), local.end());
   // Sphere pairs come out grouped by i; sort by (i, j) for a reproducible order.
   std::sort(contacts.begin(), contacts.end(), [](const Contact& a, const Contact& c) {
     return a.i != c.i ? a.i < c.i : a.other < c.other;

@@ -18,11 +18,14 @@ class ContactDetector {
  public:
   // Fills `contacts` (cleared first) in a deterministic order: sphere pairs by
   // (i, j), then sphere–plane pairs. Pairs of two fixed bodies are skipped.
-  void detect(const World& world, double margin, std::vector<Contact>& contacts);
+  // The sphere pairs are searched by `threads` threads, each over a block of
+  // spheres i; the blocks are joined in order, so the result does not depend on it.
+  void detect(const World& world, double margin, std::vector<Contact>& contacts, int threads = 1);
 
  private:
   void build_cells(const World& world, double cell_size);
-  void add_pair_contacts(const World& world, double margin, std::vector<Contact>& contacts);
+  void add_pair_contacts(const World& world, double margin, std::size_t i,
+                         std::vector<Contact>& contacts) const;
 
   std::array<int, 3> n_cells_{};
   Vec3 origin_ = Vec3::Zero();
@@ -30,6 +33,7 @@ class ContactDetector {
   std::vector<std::int32_t> cell_start_;  // CSR layout: bodies of cell c are
   std::vector<std::int32_t> cell_body_;   // cell_body_[cell_start_[c] .. cell_start_[c+1])
   std::vector<std::int32_t> body_cell_;
+  std::vector<std::vector<Contact>> per_thread_;  // reused between calls
 };
 
 // Fills the geometry-derived fields of a contact (arms, Delassus coefficients).

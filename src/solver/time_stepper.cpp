@@ -86,7 +86,7 @@ StepReport TimeStepper::step(World& world) {
   // 2. detect, 3. warm start, 4. solve
   using Clock = std::chrono::steady_clock;
   const auto detection_start = Clock::now();
-  detector_.detect(world, detection_margin(world), contacts_);
+  detector_.detect(world, detection_margin(world), contacts_, settings_.threads);
   slabs_ = partition_into_slabs(contacts_, world, scratch_);
   free_velocity_.resize(contacts_.size());
   for (std::size_t k = 0; k < contacts_.size(); ++k) {
