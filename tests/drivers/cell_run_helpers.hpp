@@ -2,6 +2,8 @@
 // Runs a small shear cell in a temporary folder and returns its summary.json.
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -24,6 +26,42 @@ inline nlohmann::json run_cell_summary(const std::string& name,
   auto summary = nlohmann::json::parse(in);
   std::filesystem::remove_all(dir);
   return summary;
+}
+
+// Shear-cell results are compared over several seeds: on small cells one run's
+// block error bar understates the run-to-run scatter.
+inline constexpr int kSeeds = 4;
+
+struct SeedMean {
+  double mean = 0.0;
+  double error = 0.0;
+};
+
+// Mean over the seeds of summary[key] and its standard error.
+inline SeedMean seed_mean(const std::vector<nlohmann::json>& runs, const std::string& key) {
+  const double n = double(runs.size());
+  SeedMean m;
+  double block_variance = 0.0;
+  for (const auto& r : runs) {
+    m.mean += r[key].get<double>() / n;
+    block_variance += std::pow(r[key + "_err"].get<double>(), 2) / (n * n);
+  }
+  double scatter = 0.0;
+  for (const auto& r : runs) scatter += std::pow(r[key].get<double>() - m.mean, 2) / (n - 1.0);
+  m.error = std::sqrt(std::max(scatter / n, block_variance));
+  return m;
+}
+
+// One run per seed 1..kSeeds of the default cell with `overrides`.
+inline std::vector<nlohmann::json> run_cell_seeds(const std::string& name,
+                                                  const std::vector<std::string>& overrides) {
+  std::vector<nlohmann::json> runs;
+  for (int seed = 1; seed <= kSeeds; ++seed) {
+    std::vector<std::string> o = overrides;
+    o.push_back("cell.seed=" + std::to_string(seed));
+    runs.push_back(run_cell_summary(name + "_s" + std::to_string(seed), o));
+  }
+  return runs;
 }
 
 }  // namespace dilatant::testing

@@ -25,53 +25,24 @@
 namespace dilatant {
 namespace {
 
-constexpr int kSeeds = 4;
-
-struct SeedMean {
-  double mean = 0.0;
-  double error = 0.0;
-};
-
-// Mean over the seeds of summary[key] and its standard error.
-SeedMean seed_mean(const std::vector<nlohmann::json>& runs, const std::string& key) {
-  const double n = double(runs.size());
-  SeedMean m;
-  double block_variance = 0.0;
-  for (const auto& r : runs) {
-    m.mean += r[key].get<double>() / n;
-    block_variance += std::pow(r[key + "_err"].get<double>(), 2) / (n * n);
-  }
-  double scatter = 0.0;
-  for (const auto& r : runs) scatter += std::pow(r[key].get<double>() - m.mean, 2) / (n - 1.0);
-  m.error = std::sqrt(std::max(scatter / n, block_variance));
-  return m;
-}
-
 // Runs are cached by name within the process: the reference point is shared.
 std::vector<nlohmann::json> run_small_cells(const std::string& name,
                                             const std::vector<std::string>& extra) {
   static std::map<std::string, std::vector<nlohmann::json>> cache;
   if (const auto it = cache.find(name); it != cache.end()) return it->second;
-  std::vector<nlohmann::json> runs;
-  for (int seed = 1; seed <= kSeeds; ++seed) {
-    std::vector<std::string> overrides = {"cell.size=[8.0, 5.0, 9.0]",
-                                          "fluid.lambda=1.0",
-                                          "run.strain=6.0",
-                                          "run.transient_strain=2.0",
-                                          "run.output_interval=0.02",
-                                          "run.snapshot_interval=0.0",
-                                          "solver.tolerance=1e-4",
-                                          "cell.seed=" + std::to_string(seed)};
-    overrides.insert(overrides.end(), extra.begin(), extra.end());
-    runs.push_back(testing::run_cell_summary("conv_" + name + std::to_string(seed), overrides));
-  }
+  std::vector<std::string> overrides = {
+      "cell.size=[8.0, 5.0, 9.0]", "fluid.lambda=1.0",         "run.strain=6.0",
+      "run.transient_strain=2.0",  "run.output_interval=0.02", "run.snapshot_interval=0.0",
+      "solver.tolerance=1e-4"};
+  overrides.insert(overrides.end(), extra.begin(), extra.end());
+  const auto runs = testing::run_cell_seeds("conv_" + name, overrides);
   cache[name] = runs;
   return runs;
 }
 
 void expect_same_point(const std::vector<nlohmann::json>& a, const std::vector<nlohmann::json>& b) {
   for (const std::string key : {"eta", "frac_bl"}) {
-    const SeedMean x = seed_mean(a, key), y = seed_mean(b, key);
+    const testing::SeedMean x = testing::seed_mean(a, key), y = testing::seed_mean(b, key);
     ASSERT_GT(x.error, 0.0) << key;
     ASSERT_GT(y.error, 0.0) << key;
     EXPECT_NEAR(x.mean, y.mean, 3.0 * std::hypot(x.error, y.error)) << key;
@@ -90,7 +61,7 @@ TEST(CellConvergence, HalvedTimeStepKeepsEtaAndBoundaryFraction) {
   const auto coarse = run_small_cells("reference", {});
   const auto fine = run_small_cells("dt_half", {"solver.max_displacement=0.01"});
   // Same strain in twice the steps, give or take the flow's own fluctuations.
-  for (int k = 0; k < kSeeds; ++k) {
+  for (int k = 0; k < testing::kSeeds; ++k) {
     EXPECT_GT(fine[k]["steps"].get<double>(), 1.5 * coarse[k]["steps"].get<double>());
   }
   expect_same_point(coarse, fine);
