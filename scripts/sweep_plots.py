@@ -188,11 +188,12 @@ def draw_curve(ax, curve, colour, marker, label):
     eta = np.array([number(r["eta"]) for r in flowing])
     valid = np.array([r["valid"] == "true" for r in flowing], dtype=bool)
     err = np.array([number(r["eta_err"]) for r in flowing])
-    ax.plot(rate, eta, "-", color=colour, lw=0.8, alpha=0.35)
-    ax.errorbar(rate[valid], eta[valid], yerr=np.nan_to_num(err[valid]), fmt=marker, ms=5,
-                color=colour, capsize=2, lw=0.8, label=label)
-    if not valid.any():
-        ax.plot([], [], marker, ls="none", ms=5, mfc="none", color=colour, label=label)
+    ax.plot(rate, eta, "-", color=colour, lw=0.8, alpha=0.5)
+    if valid.any():
+        ax.errorbar(rate[valid], eta[valid], yerr=np.nan_to_num(err[valid]), fmt=marker, ms=5,
+                    color=colour, capsize=2, lw=0.8, label=label)
+    else:  # the curve's legend entry all the same: its colour and marker, hollow
+        ax.plot([], [], marker, ls="-", lw=0.8, ms=5, mfc="none", color=colour, label=label)
     ax.plot(rate[~valid], eta[~valid], marker, ls="none", ms=5, mfc="none", mec=INVALID)
     draw_jams(ax, curve, colour)
     if not flowing:
@@ -239,10 +240,16 @@ def flow_curves_figure(out, rows, curves, swept):
     if any(r["valid"] != "true" and r["jammed"] != "true" for r in rows):
         ax.plot([], [], "o", ls="none", mfc="none", mec=INVALID, label="outside validity")
     log_axes(ax)
-    ax.legend(fontsize=7, loc="best")
+    # The curves in their order (errorbar entries would come after plain lines), then guides.
+    handles, labels = ax.get_legend_handles_labels()
+    order = [c.label() for c in curves]
+    ranked = sorted(zip(handles, labels),
+                    key=lambda hl: order.index(hl[1]) if hl[1] in order else len(order))
+    ax.legend(*zip(*ranked), fontsize=7, loc="best")
     ax.set_title("Viscosity vs shear rate per $\\mu_0$ and $\\phi$ (paper Fig. 2)", fontsize=10)
     caption(fig, settings_caption(out, rows, swept) + "\n" + VALIDITY_NOTE +
-            ("\n" + "; ".join(notes) if notes else ""))
+            "\narrow: the cell jams (the wall stops) at the stresses above its curve's last "
+            "flowing point: DST" + ("\n" + "; ".join(notes) if notes else ""))
     save(fig, out / "plots", "flow_curves")
 
 
