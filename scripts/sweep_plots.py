@@ -290,7 +290,10 @@ def fig1b(out, rows, curve, colours, swept):
     save(fig, out / "plots", "fig1b_viscosity")
 
 
-def friction_law(s, mu0, s_c, s_lim):
+def friction_law(law, s, mu0, s_c, s_lim):
+    """mu(s): the paper's Eq. 1 (stribeck, held at s_lim beyond), or mu0 (coulomb)."""
+    if law == "coulomb":
+        return np.full_like(s, mu0)
     hd = lambda x: 2 * np.pi * x * np.log(5 / (6 * np.pi * x))  # noqa: E731
     return np.where(s < s_c, mu0, np.where(s < s_lim, hd(np.minimum(s, s_lim)), hd(s_lim)))
 
@@ -332,7 +335,9 @@ def fig1c(out, rows, curve, colours, swept):
     ax.set_ylabel(r"$P(s)$ per decade of $s$ (contacts that slide)")
     law = ax.twinx()
     s = np.geomspace(*ax.get_xlim(), 400)
-    law.plot(s, friction_law(s, mu0, s_c, s_lim), "k-", lw=1.5, label=r"friction law $\mu(s)$")
+    name = curve.rows[0]["friction_law"]
+    law.plot(s, friction_law(name, s, mu0, s_c, s_lim), "k-", lw=1.5,
+             label=f"friction law $\\mu(s)$ ({name})")
     law.set_ylabel(r"friction coefficient $\mu(s)$")
     law.set_ylim(0, max(0.7, mu0 * 1.3))
     for x, name in ((s_c, "$s_c$"), (s_lim, "$s_{lim}$")):

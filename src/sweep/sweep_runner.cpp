@@ -79,8 +79,13 @@ class Sweep {
     for (const auto& p : plan_.points) {
       fraction_[p.index].store(-1.0);
       if (state_[p.index] != PointState::Done) continue;
+      try {
+        records_[p.index].summary = read_summary(out / p.folder / "summary.json");
+      } catch (const std::exception&) {
+        state_[p.index] = PointState::Fresh;  // an unreadable summary.json: run the point anew
+        continue;
+      }
       records_[p.index].status = PointStatus::Done;
-      records_[p.index].summary = read_summary(out / p.folder / "summary.json");
       ++outcome.skipped;
     }
     write_table();
