@@ -19,11 +19,12 @@ CLI::App* add_analyze_command(CLI::App& app, AnalyzeCommandArgs& args) {
       "analyze",
       "Rheometer analysis (paper Fig. 3): per flow curve the Newtonian viscosity, the onset of "
       "thickening, the Ostwald-de Waele exponent n (eta ~ gamma_dot^n) with its confidence "
-      "interval and the regime (newtonian, cst, dst); per sample the fit n - 1 = A x^-alpha, "
-      "x = (phi_max - phi)/phi_max, phi_max given or fitted; the master-curve collapse of all "
-      "samples. INPUT is a manifest (TOML: [[curve]] file, sample, phi; [samples.NAME] "
-      "phi_max) or a sweep's flowcurves.csv (curves by phi and mu0). Writes curves.csv, "
-      "points.csv, fits.json and plots (PNG, SVG) to --out. See docs/analysis.md.");
+      "interval and the regime (newtonian, cst, dst, jammed); per sample the fit "
+      "n - 1 = A x^-alpha, x = (phi_max - phi)/phi_max, phi_max given or fitted; the "
+      "master-curve collapse of all samples. INPUT is a manifest (TOML: [[curve]] file, "
+      "sample, phi; [samples.NAME] phi_max) or a sweep's flowcurves.csv (curves by phi and "
+      "mu0, or by phi and its sample column). Writes curves.csv, points.csv, fits.json and "
+      "plots (PNG, SVG) to --out. See docs/analysis.md.");
   cmd->add_option("input", args.input, "Manifest (.toml) or flowcurves.csv")
       ->required()
       ->check(CLI::ExistingFile);
