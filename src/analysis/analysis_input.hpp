@@ -41,8 +41,11 @@ AnalysisInput read_manifest(const std::filesystem::path& manifest);
 // Sweep table (flowcurves.csv of `dilatant sweep`): a header with at least
 // phi, mu0, shear_stress, gamma_dot, valid, jammed (optionally gamma_dot_err;
 // other columns are ignored); one row per simulation, in the paper's units.
-// Rows are grouped into curves by (phi, mu0), sample "mu0=<value>"; valid and
-// jammed are true/false; a jammed row may have gamma_dot 0 and an empty eta.
+// Rows are grouped into curves by (phi, mu0), sample "mu0=<value>", or by
+// (phi, sample) when a `sample` column names the curve (a sweep over more than
+// mu0: "mu0=0.1 law=coulomb"); valid and jammed are true/false; a jammed row
+// may have gamma_dot 0 and an empty eta. With a `status` column, only rows
+// whose status is `done` are read (failed and pending points have no result).
 AnalysisInput read_sweep_table(const std::filesystem::path& table);
 
 }  // namespace dilatant::analysis

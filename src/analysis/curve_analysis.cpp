@@ -138,6 +138,18 @@ void fit_exponent(const FlowCurve& curve, const LogCurve& c, std::size_t from, s
   for (std::size_t k = from; k < to; ++k) r.in_window[c.index[k]] = true;
 }
 
+// d ln eta / d ln gamma_dot at each fit point, from its neighbours (header, "Local slope").
+void local_slopes(const LogCurve& c, CurveResult& r) {
+  const std::size_t n = c.x.size();
+  if (n < 2) return;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t left = k > 0 ? k - 1 : 0, right = k + 1 < n ? k + 1 : n - 1;
+    if (!(c.x[right] > c.x[left])) continue;  // equal stresses: no slope
+    const double b = (c.y[right] - c.y[left]) / (c.x[right] - c.x[left]);
+    r.local_slope[c.index[k]] = b > 0.0 ? 1.0 / b - 1.0 : kInfinity;
+  }
+}
+
 // The window the user set, as [from, to) in fit points.
 std::pair<std::size_t, std::size_t> user_window(const FlowCurve& curve, const LogCurve& c) {
   const StressWindow& w = *curve.window;
@@ -167,6 +179,8 @@ std::string_view regime_name(Regime r) {
       return "dst";
     case Regime::Unresolved:
       return "unresolved";
+    case Regime::Jammed:
+      return "jammed";
   }
   return "";
 }
@@ -188,13 +202,17 @@ std::string_view dst_evidence_name(DstEvidence e) {
 CurveResult analyse_curve(const FlowCurve& curve, const AnalysisSettings& s) {
   CurveResult r;
   r.in_window.assign(curve.points.size(), false);
-  const bool jammed = std::any_of(curve.points.begin(), curve.points.end(),
-                                  [](const FlowPoint& p) { return p.jammed; });
+  r.local_slope.assign(curve.points.size(), kNotFound);
+  const auto is_jammed = [](const FlowPoint& p) { return p.jammed; };
+  const bool jammed = std::any_of(curve.points.begin(), curve.points.end(), is_jammed);
+  const bool never_flows =
+      !curve.points.empty() && std::all_of(curve.points.begin(), curve.points.end(), is_jammed);
   const LogCurve c = fit_points(curve, s, r.noise);
+  local_slopes(c, r);
   const std::size_t n = c.x.size();
   if (n < kMinFitPoints) {
-    r.regime = jammed ? Regime::Dst : Regime::Unresolved;
-    if (jammed) r.dst_evidence = DstEvidence::Jammed;
+    r.regime = never_flows ? Regime::Jammed : jammed ? Regime::Dst : Regime::Unresolved;
+    if (r.regime == Regime::Dst) r.dst_evidence = DstEvidence::Jammed;
     return r;
   }
 
@@ -250,6 +268,8 @@ CurveResult analyse_curve(const FlowCurve& curve, const AnalysisSettings& s) {
     r.dst_evidence = DstEvidence::ExponentAboveCap;
   } else {
     r.regime = Regime::Cst;
+    // Step 7: Bagnold scaling, n = 1, within the interval.
+    r.bagnold = r.n_low <= 1.0 && 1.0 <= r.n_high;
   }
   return r;
 }

@@ -27,11 +27,29 @@
 //     when the scatter exceeds sigma), Student t quantile with m - 2 degrees of
 //     freedom; n_low = 1/(b + t se) - 1, n_high = 1/(b - t se) - 1, or infinity
 //     when the bound is <= 0.
-//  6. Regime: newtonian (no onset in the ramp), unresolved (onset but fewer than
-//     3 points above it), dst (a jammed simulation point, or b <= 0: the rate does
-//     not increase with stress, or n > dst_n_cap), else cst.
+//  6. Regime, the first rule that applies:
+//       jammed      every point of the curve is a jammed simulation (no flow at
+//                   any stress of the curve);
+//       dst         some point jammed while others flow (the flow stops above a
+//                   critical stress);
+//       newtonian   no onset in the ramp;
+//       unresolved  an onset but fewer than 3 fit points above it;
+//       dst         b <= 0 (the rate does not increase with stress) or n > dst_n_cap;
+//       cst         otherwise.
+//     A curve with fewer than 3 fit points in all is jammed, dst (a jam) or
+//     unresolved by the same rules.
+//  7. Bagnold check, CST curves only: eta ∝ gamma_dot (n = 1, the Bagnold
+//     scaling of dense granular flow, tau ∝ gamma_dot^2) holds when the interval
+//     n_low..n_high contains 1.
+//
+// Local slope, per fit point k: d ln eta / d ln gamma_dot = 1/b_k - 1 with
+// b_k = d ln gamma_dot / d ln tau between its neighbouring fit points (centred
+// difference; one-sided at the ends of the curve); +inf where the rate does not
+// increase with stress (b_k <= 0). 0 on a Newtonian plateau, 1 in Bagnold
+// scaling; the exponent n is its value averaged over the window.
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -40,10 +58,10 @@
 
 namespace dilatant::analysis {
 
-enum class Regime { Newtonian, Cst, Dst, Unresolved };
+enum class Regime { Newtonian, Cst, Dst, Unresolved, Jammed };
 enum class DstEvidence { None, RateNotIncreasing, ExponentAboveCap, Jammed };
 
-std::string_view regime_name(Regime r);  // newtonian | cst | dst | unresolved
+std::string_view regime_name(Regime r);  // newtonian | cst | dst | unresolved | jammed
 std::string_view dst_evidence_name(
     DstEvidence e);  // "" | rate_not_increasing | n_above_cap | jammed
 
@@ -65,7 +83,10 @@ struct CurveResult {
   double noise = kNotFound;  // typical relative noise of the shear rate used
   Regime regime = Regime::Newtonian;
   DstEvidence dst_evidence = DstEvidence::None;
-  std::vector<bool> in_window;  // per point of the curve
+  // CST only (else empty): does the interval of n hold 1 (Bagnold scaling)?
+  std::optional<bool> bagnold;
+  std::vector<bool> in_window;      // per point of the curve
+  std::vector<double> local_slope;  // per point: d ln eta / d ln gamma_dot; NaN if not fitted
 };
 
 // Throws InputError when the curve's user window holds fewer than 3 fit points.

@@ -115,32 +115,35 @@ Json collapse_json(const AnalysisReport& r) {
 std::string curves_csv(const AnalysisReport& r) {
   std::string out =
       "sample,phi,eta_newtonian,onset_stress,onset_rate,n,n_low,n_high,regime,dst_evidence,"
-      "n_sigma,consistency,window_stress_low,window_stress_high,window_points,window,noise,"
-      "points,file\n";
+      "bagnold,n_sigma,consistency,window_stress_low,window_stress_high,window_points,window,"
+      "noise,points,file\n";
   for (std::size_t i = 0; i < r.curves.size(); ++i) {
     const FlowCurve& c = r.input.curves[i];
     const CurveResult& k = r.curves[i];
     const bool fitted = k.window_points > 0;
-    out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\"\n", c.sample,
-                       csv(c.phi), csv(k.eta_newtonian), csv(k.onset_stress), csv(k.onset_rate),
-                       csv(k.n), csv(k.n_low), csv(k.n_high), regime_name(k.regime),
-                       dst_evidence_name(k.dst_evidence), csv(k.n_sigma), csv(k.consistency),
-                       csv(k.window_stress_low), csv(k.window_stress_high), k.window_points,
-                       fitted ? (k.window_from_user ? "user" : "auto") : "", csv(k.noise),
-                       c.points.size(), c.source);
+    const char* bagnold = !k.bagnold ? "" : *k.bagnold ? "true" : "false";
+    out += fmt::format(
+        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\"\n", c.sample, csv(c.phi),
+        csv(k.eta_newtonian), csv(k.onset_stress), csv(k.onset_rate), csv(k.n), csv(k.n_low),
+        csv(k.n_high), regime_name(k.regime), dst_evidence_name(k.dst_evidence), bagnold,
+        csv(k.n_sigma), csv(k.consistency), csv(k.window_stress_low), csv(k.window_stress_high),
+        k.window_points, fitted ? (k.window_from_user ? "user" : "auto") : "", csv(k.noise),
+        c.points.size(), c.source);
   }
   return out;
 }
 
 std::string points_csv(const AnalysisReport& r) {
-  std::string out = "curve,sample,phi,shear_stress,shear_rate,viscosity,valid,jammed,in_window\n";
+  std::string out =
+      "curve,sample,phi,shear_stress,shear_rate,viscosity,valid,jammed,in_window,local_slope\n";
   for (std::size_t i = 0; i < r.curves.size(); ++i) {
     const FlowCurve& c = r.input.curves[i];
     for (std::size_t k = 0; k < c.points.size(); ++k) {
       const FlowPoint& p = c.points[k];
-      out += fmt::format("{},{},{},{},{},{},{},{},{}\n", i, c.sample, csv(c.phi),
-                         csv(p.shear_stress), csv(p.shear_rate), csv(p.viscosity), p.valid,
-                         p.jammed, static_cast<bool>(r.curves[i].in_window[k]));
+      out +=
+          fmt::format("{},{},{},{},{},{},{},{},{},{}\n", i, c.sample, csv(c.phi),
+                      csv(p.shear_stress), csv(p.shear_rate), csv(p.viscosity), p.valid, p.jammed,
+                      static_cast<bool>(r.curves[i].in_window[k]), csv(r.curves[i].local_slope[k]));
     }
   }
   return out;

@@ -3,13 +3,17 @@
 //
 //   curves.csv  one row per flow curve:
 //     sample,phi,eta_newtonian,onset_stress,onset_rate,n,n_low,n_high,regime,
-//     dst_evidence,n_sigma,consistency,window_stress_low,window_stress_high,
+//     dst_evidence,bagnold,n_sigma,consistency,window_stress_low,window_stress_high,
 //     window_points,window,noise,points,file
-//     (empty = not applicable; n, n_low, n_high may be "inf"; window is auto or user;
-//     consistency is K of eta = K gamma_dot^n; noise the relative rate noise used)
+//     (empty = not applicable; n, n_low, n_high may be "inf"; regime is newtonian,
+//     cst, dst, unresolved or jammed; bagnold (CST only) true when the interval
+//     of n holds 1; window is auto or user; consistency is K of eta = K gamma_dot^n;
+//     noise the relative rate noise used)
 //   points.csv  one row per measured point, for the plots:
-//     curve,sample,phi,shear_stress,shear_rate,viscosity,valid,jammed,in_window
-//     (curve = 0-based row of curves.csv)
+//     curve,sample,phi,shear_stress,shear_rate,viscosity,valid,jammed,in_window,
+//     local_slope
+//     (curve = 0-based row of curves.csv; local_slope = d ln eta / d ln gamma_dot,
+//     empty for points not fitted, "inf" where the rate does not grow)
 //   fits.json   per sample phi_max, A, alpha with uncertainties (and the free
 //     phi_max check), the collapse with its quality, units, settings, version.
 //

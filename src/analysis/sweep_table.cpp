@@ -1,5 +1,6 @@
 // A simulation sweep's flowcurves.csv (analysis_input.hpp), grouped into one
-// flow curve per (phi, mu0).
+// flow curve per (phi, mu0), or per (phi, sample) when the table labels its
+// curves (a `sample` column, as `dilatant sweep` writes).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -25,6 +26,8 @@ constexpr std::array kRequired = {"phi"sv,       "mu0"sv,   "shear_stress"sv,
 struct Columns {
   std::size_t phi, mu0, stress, rate, valid, jammed;
   std::optional<std::size_t> rate_err;
+  std::optional<std::size_t> status;  // `dilatant sweep`: done | failed | pending
+  std::optional<std::size_t> sample;  // `dilatant sweep`: the curve's label
   std::size_t count;
 };
 
@@ -49,7 +52,8 @@ class SweepReader {
                             "gamma_dot, valid, jammed)",
                             name));
     return Columns{*find("phi"),   *find("mu0"),    *find("shear_stress"), *find("gamma_dot"),
-                   *find("valid"), *find("jammed"), find("gamma_dot_err"), fields.size()};
+                   *find("valid"), *find("jammed"), find("gamma_dot_err"), find("status"),
+                   find("sample"), fields.size()};
   }
 
   double number(std::size_t line, const std::vector<std::string>& f, std::size_t column,
@@ -74,19 +78,23 @@ class SweepReader {
 
   struct Row {
     double phi, mu0;
+    std::string sample;
     FlowPoint point;
   };
 
-  Row row(std::size_t line, const std::string& text, const Columns& c) const {
+  // nullopt for a point of a sweep that has no result (status failed or pending).
+  std::optional<Row> row(std::size_t line, const std::string& text, const Columns& c) const {
     const auto f = split_fields(text, ',');
     if (f.size() != c.count)
       fail(line, fmt::format("expected {} fields (as in the header), got {}", c.count, f.size()));
+    if (c.status && f[*c.status] != "done") return std::nullopt;
     Row r{};
     r.phi = number(line, f, c.phi, "phi");
     if (!(r.phi > 0.0 && r.phi < 0.74))
       fail(line, fmt::format("column 'phi': {} must be in (0, 0.74)", r.phi));
     r.mu0 = number(line, f, c.mu0, "mu0");
     if (r.mu0 < 0.0) fail(line, fmt::format("column 'mu0': {} must be >= 0", r.mu0));
+    r.sample = c.sample && !f[*c.sample].empty() ? f[*c.sample] : fmt::format("mu0={}", r.mu0);
     FlowPoint& p = r.point;
     p.line = line;
     p.shear_stress = number(line, f, c.stress, "shear_stress");
@@ -125,15 +133,19 @@ AnalysisInput read_sweep_table(const std::filesystem::path& table) {
   input.source = name;
   input.kind = InputKind::SweepTable;
   input.units = UnitSystem::Paper;
-  std::map<std::pair<double, double>, std::size_t> curve_of;  // (phi, mu0) -> curve
+  std::map<std::pair<double, std::string>, std::size_t> curve_of;  // (phi, sample) -> curve
+  std::size_t rows = 0;
   for (std::size_t i = 1; i < lines.size(); ++i) {
     if (is_blank(lines[i])) continue;
-    const auto r = reader.row(i + 1, lines[i], columns);
-    auto [it, added] = curve_of.try_emplace({r.phi, r.mu0}, input.curves.size());
+    ++rows;
+    const auto parsed = reader.row(i + 1, lines[i], columns);
+    if (!parsed) continue;
+    const auto& r = *parsed;
+    auto [it, added] = curve_of.try_emplace({r.phi, r.sample}, input.curves.size());
     if (added) {
       FlowCurve c;
       c.source = name;
-      c.sample = fmt::format("mu0={}", r.mu0);
+      c.sample = r.sample;
       c.phi = r.phi;
       input.curves.push_back(std::move(c));
       if (std::find(input.samples.begin(), input.samples.end(), input.curves.back().sample) ==
@@ -142,7 +154,8 @@ AnalysisInput read_sweep_table(const std::filesystem::path& table) {
     }
     input.curves[it->second].points.push_back(r.point);
   }
-  if (input.curves.empty()) reader.fail(1, "no data rows after the header");
+  if (rows == 0) reader.fail(1, "no data rows after the header");
+  if (input.curves.empty()) reader.fail(1, "no finished point (status done) in the table");
   // Simulations are independent runs, listed in any order: sort by stress. Two
   // runs at the same stress of one curve would be two answers for one point.
   for (auto& c : input.curves) {
@@ -150,11 +163,10 @@ AnalysisInput read_sweep_table(const std::filesystem::path& table) {
               [](const auto& a, const auto& b) { return a.shear_stress < b.shear_stress; });
     for (std::size_t k = 1; k < c.points.size(); ++k)
       if (c.points[k].shear_stress == c.points[k - 1].shear_stress)
-        reader.fail(
-            c.points[k].line,
-            fmt::format("shear_stress {} repeats line {} for phi {}, mu0 {} (one run "
-                        "per point of a flow curve)",
-                        c.points[k].shear_stress, c.points[k - 1].line, c.phi, c.sample.substr(4)));
+        reader.fail(c.points[k].line,
+                    fmt::format("shear_stress {} repeats line {} for phi {}, {} (one run "
+                                "per point of a flow curve)",
+                                c.points[k].shear_stress, c.points[k - 1].line, c.phi, c.sample));
   }
   return input;
 }

@@ -1,23 +1,16 @@
 #include "app/analyze_command.hpp"
 
-#include <fcntl.h>
 #include <fmt/format.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <iostream>
 
 #include "analysis/analysis.hpp"
 #include "analysis/analysis_input.hpp"
 #include "analysis/report_files.hpp"
+#include "app/python_script.hpp"
 #include "io/input_error.hpp"
-
-extern char** environ;
 
 namespace dilatant {
 
@@ -26,11 +19,12 @@ CLI::App* add_analyze_command(CLI::App& app, AnalyzeCommandArgs& args) {
       "analyze",
       "Rheometer analysis (paper Fig. 3): per flow curve the Newtonian viscosity, the onset of "
       "thickening, the Ostwald-de Waele exponent n (eta ~ gamma_dot^n) with its confidence "
-      "interval and the regime (newtonian, cst, dst); per sample the fit n - 1 = A x^-alpha, "
-      "x = (phi_max - phi)/phi_max, phi_max given or fitted; the master-curve collapse of all "
-      "samples. INPUT is a manifest (TOML: [[curve]] file, sample, phi; [samples.NAME] "
-      "phi_max) or a sweep's flowcurves.csv (curves by phi and mu0). Writes curves.csv, "
-      "points.csv, fits.json and plots (PNG, SVG) to --out. See docs/analysis.md.");
+      "interval and the regime (newtonian, cst, dst, jammed); per sample the fit "
+      "n - 1 = A x^-alpha, x = (phi_max - phi)/phi_max, phi_max given or fitted; the "
+      "master-curve collapse of all samples. INPUT is a manifest (TOML: [[curve]] file, "
+      "sample, phi; [samples.NAME] phi_max) or a sweep's flowcurves.csv (curves by phi and "
+      "mu0, or by phi and its sample column). Writes curves.csv, points.csv, fits.json and "
+      "plots (PNG, SVG) to --out. See docs/analysis.md.");
   cmd->add_option("input", args.input, "Manifest (.toml) or flowcurves.csv")
       ->required()
       ->check(CLI::ExistingFile);
@@ -66,55 +60,6 @@ void check_settings(const analysis::AnalysisSettings& s) {
   if (s.min_window_points < 3) fail("--min-window-points", s.min_window_points, "must be >= 3");
   if (!(s.confidence > 0.0 && s.confidence < 1.0))
     fail("--confidence", s.confidence, "must be in (0, 1)");
-}
-
-std::string last_line(const std::string& text) {
-  auto end = text.find_last_not_of(" \n\r\t");
-  if (end == std::string::npos) return "";
-  const auto start = text.rfind('\n', end);
-  return text.substr(start == std::string::npos ? 0 : start + 1,
-                     end - (start == std::string::npos ? 0 : start + 1) + 1);
-}
-
-// Runs `python script dir` without a shell; its output is captured so that a
-// failure is reported in one line. Returns "" on success, else why it failed.
-std::string draw_plots(const std::string& python, const std::string& script,
-                       const std::filesystem::path& dir) {
-  if (!std::filesystem::is_regular_file(script))
-    return fmt::format("plot script {} not found", script);
-  int fds[2];
-  if (pipe(fds) != 0) return fmt::format("pipe: {}", std::strerror(errno));
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
-  posix_spawn_file_actions_adddup2(&actions, fds[1], STDERR_FILENO);
-  posix_spawn_file_actions_addclose(&actions, fds[0]);
-  posix_spawn_file_actions_addclose(&actions, fds[1]);
-  std::string dir_arg = dir.string(), python_arg = python, script_arg = script;
-  char* argv[] = {python_arg.data(), script_arg.data(), dir_arg.data(), nullptr};
-  pid_t pid = 0;
-  // posix_spawnp: a bare name such as --python python3 is looked up in PATH.
-  const int spawned = posix_spawnp(&pid, python.c_str(), &actions, nullptr, argv, environ);
-  posix_spawn_file_actions_destroy(&actions);
-  close(fds[1]);
-  if (spawned != 0) {
-    close(fds[0]);
-    return fmt::format("cannot run {}: {}", python, std::strerror(spawned));
-  }
-  std::string output;
-  char buffer[4096];
-  for (ssize_t got; (got = read(fds[0], buffer, sizeof buffer)) != 0;) {
-    if (got < 0 && errno == EINTR) continue;
-    if (got < 0) break;
-    output.append(buffer, static_cast<std::size_t>(got));
-  }
-  close(fds[0]);
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
-  const std::string why = last_line(output);
-  return fmt::format("{} {} failed{}{}", python, script, why.empty() ? "" : ": ", why);
 }
 
 std::string with_error(const analysis::Estimate& e, const char* format) {
@@ -169,7 +114,7 @@ int execute_analyze_command(const AnalyzeCommandArgs& args) {
 #else
     const std::string script = args.plot_script;
 #endif
-    const std::string failure = draw_plots(args.python, script, out);
+    const std::string failure = run_plot_script(args.python, script, out);
     if (!failure.empty())
       std::cerr << fmt::format(
           "dilatant: plots skipped ({}); curves.csv, points.csv and fits.json are complete\n",

@@ -6,7 +6,9 @@
 #include <iostream>
 
 #include "app/analyze_command.hpp"
+#include "app/plot_command.hpp"
 #include "app/run_command.hpp"
+#include "app/sweep_command.hpp"
 #include "dilatant/version.hpp"
 #include "io/input_error.hpp"
 
@@ -18,8 +20,12 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   dilatant::RunCommandArgs run_args;
   CLI::App* run = dilatant::add_run_command(app, run_args);
+  dilatant::SweepCommandArgs sweep_args;
+  CLI::App* sweep = dilatant::add_sweep_command(app, sweep_args);
   dilatant::AnalyzeCommandArgs analyze_args;
   CLI::App* analyze = dilatant::add_analyze_command(app, analyze_args);
+  dilatant::PlotCommandArgs plot_args;
+  CLI::App* plot = dilatant::add_plot_command(app, plot_args);
 
   try {
     app.parse(argc, argv);
@@ -30,7 +36,9 @@ int main(int argc, char** argv) {
   }
   try {
     if (run->parsed()) return dilatant::execute_run_command(run_args);
+    if (sweep->parsed()) return dilatant::execute_sweep_command(sweep_args);
     if (analyze->parsed()) return dilatant::execute_analyze_command(analyze_args);
+    if (plot->parsed()) return dilatant::execute_plot_command(plot_args);
   } catch (const dilatant::InputError& e) {
     std::cerr << "dilatant: error: " << e.what() << "\n";
     return 2;

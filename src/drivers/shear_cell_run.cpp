@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <stdexcept>
 
 #include "drivers/model_setup.hpp"
 #include "drivers/shear_cell_summary.hpp"
@@ -58,14 +59,39 @@ double central_phi(const World& world, double lz) {
   return slab_volume_fraction(world, 0.25 * lz, 0.75 * lz);
 }
 
-ShearCellState initial_state(const Config& config) {
-  ShearCellState s;
-  s.world = build_shear_cell(config, s.geometry);
+// Measurements and output schedules at the start of a run.
+void start_measurements(const Config& config, ShearCellState& s) {
   const double lz = config.cell->size[2];
   s.profile = VelocityProfile(lz, static_cast<int>(std::ceil(lz)));
   s.next_row_strain = config.run.output_interval;
   s.next_checkpoint_strain = config.run.checkpoint_interval;
   s.next_snapshot_strain = 0.0;
+}
+
+ShearCellState initial_state(const Config& config) {
+  ShearCellState s;
+  s.world = build_shear_cell(config, s.geometry);
+  start_measurements(config, s);
+  return s;
+}
+
+// The state at the end of another run of the same cell, as the start of this
+// one: particles, walls, velocities and contact impulses are kept; strain,
+// time and every measurement start anew.
+ShearCellState continued_state(const Config& config, const std::filesystem::path& checkpoint) {
+  ShearCellState previous = load_checkpoint(checkpoint);
+  const Vec3& size = config.cell->size;
+  if (previous.world.box.length[0] != size[0] || previous.world.box.length[1] != size[1] ||
+      previous.world.sliding_wall->spheres.empty())
+    throw std::runtime_error(fmt::format("{}: not a state of this cell (cell.size = [{}, {}, {}])",
+                                         checkpoint.string(), size[0], size[1], size[2]));
+  ShearCellState s;
+  s.world = std::move(previous.world);
+  s.world.time = 0.0;
+  s.geometry = previous.geometry;
+  s.dt = previous.dt;
+  s.contact_memory = std::move(previous.contact_memory);
+  start_measurements(config, s);
   return s;
 }
 
@@ -163,9 +189,10 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
   const auto checkpoint = out / "checkpoint.bin";
   std::filesystem::create_directories(out);
 
-  ShearCellState s = options.resume && std::filesystem::exists(checkpoint)
-                         ? load_checkpoint(checkpoint)
-                         : initial_state(config);
+  const bool resuming = options.resume && std::filesystem::exists(checkpoint);
+  ShearCellState s = resuming                      ? load_checkpoint(checkpoint)
+                     : !options.start_from.empty() ? continued_state(config, options.start_from)
+                                                   : initial_state(config);
   RunCost cost;
   cost.build_s = seconds_since(start);
   const double strain_at_start = s.strain;
@@ -186,6 +213,11 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
   stepper.restore_contact_memory(s.contact_memory);
 
   const bool progress = !options.run.quiet && isatty(STDERR_FILENO);
+  const auto report_fraction = [&] {
+    if (options.progress != nullptr)
+      options.progress->store(std::min(1.0, s.strain / std::max(config.run.strain, 1e-300)));
+  };
+  report_fraction();
   auto last_progress = std::chrono::steady_clock::now();
   while (s.strain < config.run.strain && !s.jammed) {
     s.dt = choose_dt(config, s.world);
@@ -224,6 +256,7 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
       s.jam_window_strain = s.strain;
     }
     cost.measure_s += seconds_since(measure_start);
+    report_fraction();
     const bool stop = options.stop_requested != nullptr && options.stop_requested->load();
     if (s.strain >= s.next_checkpoint_strain || stop) {
       s.contact_memory = stepper.contact_memory();

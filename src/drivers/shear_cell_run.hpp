@@ -8,6 +8,8 @@
 // stresses and viscosities in the paper's units (eta_f/(rho R^2), eta_f^2/(rho R^2),
 // eta_f) — see docs/model.md.
 #include <atomic>
+#include <filesystem>
+#include <utility>
 
 #include "drivers/scene_run.hpp"
 #include "io/config.hpp"
@@ -15,10 +17,25 @@
 namespace dilatant {
 
 struct CellRunOptions {
+  CellRunOptions() = default;
+  CellRunOptions(RunOptions run_options, bool resume_run = false,
+                 const std::atomic<bool>* stop = nullptr)
+      : run(std::move(run_options)), resume(resume_run), stop_requested(stop) {}
+
   RunOptions run;
   bool resume = false;
   // Set asynchronously (SIGINT/SIGTERM): write a checkpoint and stop.
   const std::atomic<bool>* stop_requested = nullptr;
+  // Continuation along a flow curve (a rheometer ramp): instead of a new
+  // packing, start from the final state in this checkpoint of another run of
+  // the same cell (the neighbouring point of the curve). Particles, walls,
+  // velocities and contact impulses are kept; strain, time and every
+  // measurement start at zero, and the friction law and drive are this
+  // config's. Ignored when resuming from out_dir's own checkpoint.
+  std::filesystem::path start_from;
+  // When set, receives the fraction of run.strain done as the run goes (read
+  // by another thread: the progress of a sweep).
+  std::atomic<double>* progress = nullptr;
 };
 
 struct CellOutcome {

@@ -181,6 +181,16 @@ Config parse_config(std::string_view toml_text, std::string source,
                     const std::filesystem::path& base_dir,
                     const std::vector<std::string>& overrides);
 
+// The same from a parsed TOML document, e.g. one point of a sweep: its nodes
+// keep the source lines of the file they were parsed from, so messages name
+// them as load_config's do ("sweep.toml:7: friction.mu0 = -0.1: must be >= 0").
+// `source` names the file. No overrides are applied here.
+Config config_from_table(const toml::table& root, std::string source,
+                         const std::filesystem::path& base_dir);
+
+// Applies `--set` overrides (as described for load_config) to a parsed document.
+void apply_config_overrides(toml::table& root, const std::vector<std::string>& overrides);
+
 // The built-in default run: the paper's shear cell at phi 0.58, mu0 0.1, Stribeck
 // law, every other key at its default; source "<built-in>". `overrides` work as
 // for load_config (a relative scene.particles resolves against the working directory).
@@ -189,6 +199,11 @@ Config default_cell_config(const std::vector<std::string>& overrides = {});
 // The configuration as a TOML table with every key present (what `resolved` holds).
 // Built from the fields, so it reflects any change made after loading.
 toml::table to_toml(const Config& c);
+
+// One value of a configuration as TOML text: floats as the shortest text that
+// reads back exactly and always with a '.' or exponent (0.1, 10.0, 5e-05),
+// arrays as [a, b, c], strings quoted.
+std::string toml_value_text(const toml::node& value);
 
 // to_toml(c) as TOML text, headed by a comment; to be written next to results.
 // parse_config of this text yields a Config with the same values.

@@ -242,6 +242,15 @@ Config parse_config(std::string_view toml_text, std::string source,
   return build(root, std::move(source), base_dir);
 }
 
+Config config_from_table(const toml::table& root, std::string source,
+                         const std::filesystem::path& base_dir) {
+  return build(root, std::move(source), base_dir);
+}
+
+void apply_config_overrides(toml::table& root, const std::vector<std::string>& overrides) {
+  config_detail::apply_overrides(root, overrides);
+}
+
 Config load_config(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   std::ifstream in(file, std::ios::binary);
   if (!in || std::filesystem::is_directory(file))

@@ -13,8 +13,9 @@ namespace {
 toml::array array3(const Vec3& v) { return toml::array{v.x(), v.y(), v.z()}; }
 toml::array array3(const std::array<bool, 3>& v) { return toml::array{v[0], v[1], v[2]}; }
 
-// A value of the resolved table as TOML text.
-std::string value_text(const toml::node& n) {
+}  // namespace
+
+std::string toml_value_text(const toml::node& n) {
   if (const auto* d = n.as_floating_point()) {
     auto text = fmt::format("{}", d->get());  // shortest text that reads back exactly
     if (text.find_first_of(".e") == std::string::npos) text += ".0";  // stay a float
@@ -22,15 +23,14 @@ std::string value_text(const toml::node& n) {
   }
   if (const auto* a = n.as_array()) {
     std::string text = "[";
-    for (std::size_t i = 0; i < a->size(); ++i) text += (i ? ", " : "") + value_text(*a->get(i));
+    for (std::size_t i = 0; i < a->size(); ++i)
+      text += (i ? ", " : "") + toml_value_text(*a->get(i));
     return text + "]";
   }
   std::ostringstream os;  // strings (escaped by toml++), integers, booleans
   n.visit([&](const auto& v) { os << v; });
   return os.str();
 }
-
-}  // namespace
 
 toml::table to_toml(const Config& c) {
   toml::table t;
@@ -101,12 +101,13 @@ std::string resolved_toml(const Config& c) {
       if (key == "planes")
         planes = node->as_array();  // must follow the plain keys
       else
-        out += fmt::format("{} = {}\n", key, value_text(*node));
+        out += fmt::format("{} = {}\n", key, toml_value_text(*node));
     }
     for (std::size_t i = 0; planes && i < planes->size(); ++i) {
       out += "\n[[scene.planes]]\n";
       for (const auto key : config_detail::plane_keys())
-        out += fmt::format("{} = {}\n", key, value_text(*planes->get(i)->as_table()->get(key)));
+        out +=
+            fmt::format("{} = {}\n", key, toml_value_text(*planes->get(i)->as_table()->get(key)));
     }
   }
   return out;

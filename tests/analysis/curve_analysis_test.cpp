@@ -250,5 +250,91 @@ TEST(CurveAnalysis, TooFewPointsAboveTheOnsetIsUnresolved) {
   EXPECT_TRUE(std::isnan(r.n));
 }
 
+// Local slopes d ln eta / d ln gamma_dot: 0 on the plateau, n on the power law
+// (exactly, on a noiseless curve: between two points of a pure power law the
+// centred difference is exact), in between across the crossover.
+TEST(CurveAnalysis, LocalSlopeIsZeroOnThePlateauAndNOnThePowerLaw) {
+  for (const double n : {1.0, 3.0}) {
+    CurveModel model;
+    model.n = n;
+    model.sharpness = 20.0;
+    const FlowCurve curve = model.curve();
+    const CurveResult r = analyse_curve(curve, AnalysisSettings{});
+    ASSERT_EQ(r.local_slope.size(), curve.points.size());
+    for (std::size_t k = 0; k < curve.points.size(); ++k) {
+      const double tau = curve.points[k].shear_stress;
+      // The crossover (m = 20) is over (to 1e-10) a factor 3 from tau_c = 2 on
+      // either side; a centred difference reaches one ramp step (26%) further.
+      if (tau < 0.5) {
+        EXPECT_NEAR(r.local_slope[k], 0.0, 1e-6) << "tau " << tau;
+      }
+      if (tau > 8.0) {
+        EXPECT_NEAR(r.local_slope[k], n, 1e-6 * n) << "tau " << tau;
+      }
+      EXPECT_GE(r.local_slope[k], -1e-9);
+      EXPECT_LE(r.local_slope[k], n * (1 + 1e-9));
+    }
+  }
+}
+
+TEST(CurveAnalysis, LocalSlopeIsInfiniteWhereTheRateFallsAndEmptyForPointsNotFitted) {
+  CurveModel model;
+  model.rate_exponent = -0.03;
+  FlowCurve curve = model.curve();
+  curve.points[3].valid = false;
+  const CurveResult r = analyse_curve(curve, AnalysisSettings{});
+  EXPECT_TRUE(std::isinf(r.local_slope.back()));
+  EXPECT_TRUE(std::isnan(r.local_slope[3]));
+  EXPECT_NEAR(r.local_slope[0], 0.0, 1e-3);
+}
+
+// Bagnold scaling (eta ∝ gamma_dot, n = 1) is recognised in CST, and only there.
+TEST(CurveAnalysis, BagnoldCheckHoldsForNOneAndFailsForNThree) {
+  CurveModel model;
+  model.sharpness = 20.0;
+  model.noise = kNoise;
+  model.n = 1.0;
+  const CurveResult bagnold = analyse_curve(model.curve(), AnalysisSettings{});
+  ASSERT_EQ(bagnold.regime, Regime::Cst);
+  ASSERT_TRUE(bagnold.bagnold.has_value());
+  EXPECT_TRUE(*bagnold.bagnold) << "n = " << bagnold.n << " [" << bagnold.n_low << ", "
+                                << bagnold.n_high << "]";
+  model.n = 3.0;
+  const CurveResult steeper = analyse_curve(model.curve(), AnalysisSettings{});
+  ASSERT_EQ(steeper.regime, Regime::Cst);
+  ASSERT_TRUE(steeper.bagnold.has_value());
+  EXPECT_FALSE(*steeper.bagnold);
+  model.rate_exponent = 1.0;  // Newtonian: no Bagnold check at all
+  EXPECT_FALSE(analyse_curve(model.curve(), AnalysisSettings{}).bagnold.has_value());
+}
+
+// Jammed: no point of the curve flows. A curve that flows at low stress and
+// jams above is DST, whatever the number of flowing points.
+TEST(CurveAnalysis, ACurveThatNeverFlowsIsJammedAndOneThatStopsIsDst) {
+  CurveModel model;
+  FlowCurve curve = model.curve();
+  for (auto& p : curve.points) {
+    p.jammed = true;
+    p.valid = false;
+    p.shear_rate = 0.0;
+    p.viscosity = std::nan("");
+  }
+  const CurveResult never = analyse_curve(curve, AnalysisSettings{});
+  EXPECT_EQ(never.regime, Regime::Jammed);
+  EXPECT_EQ(regime_name(never.regime), "jammed");
+  EXPECT_EQ(never.dst_evidence, DstEvidence::None);
+  EXPECT_TRUE(std::isnan(never.eta_newtonian));
+  // One flowing point below the jams: flows, then stops.
+  FlowCurve stops = curve;
+  stops.points[0] = model.curve().points[0];
+  const CurveResult dst = analyse_curve(stops, AnalysisSettings{});
+  EXPECT_EQ(dst.regime, Regime::Dst);
+  EXPECT_EQ(dst.dst_evidence, DstEvidence::Jammed);
+  // Only flowing points outside the model's validity below the jams: still DST
+  // (the flow stops), not jammed.
+  stops.points[0].valid = false;
+  EXPECT_EQ(analyse_curve(stops, AnalysisSettings{}).regime, Regime::Dst);
+}
+
 }  // namespace
 }  // namespace dilatant::analysis

@@ -1,0 +1,106 @@
+#include "app/sweep_command.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+#include <iostream>
+#include <thread>
+
+#include "app/plot_command.hpp"
+#include "sweep/sweep_plan.hpp"
+#include "sweep/sweep_runner.hpp"
+
+namespace dilatant {
+
+CLI::App* add_sweep_command(CLI::App& app, SweepCommandArgs& args) {
+  CLI::App* cmd = app.add_subcommand(
+      "sweep",
+      "Run many shear cells from one sweep file: a run configuration in which any key may hold "
+      "a list of values (friction.mu0 = [0.1, 0.3], fluid.lambda = [1.0, 10.0, 100.0]; for "
+      "cell.size a list of arrays); the points are the full grid of the lists, or the "
+      "[[points]] tables of the file. Optional [sweep] table: jobs, continuation (each lambda "
+      "of a flow curve starts from the previous one's final state), continuation_strain, "
+      "continuation_transient_strain. Points run side by side, each in "
+      "DIR/points/NNN-label/; DIR/flowcurves.csv gets one row per point (swept keys, status, "
+      "error, summary fields) after every finished point; DIR/sweep.toml is the resolved sweep. "
+      "Running the same command again skips finished points and resumes the others; Ctrl-C "
+      "checkpoints the running points. At the end, the flow-curve analysis (DIR/analysis/: "
+      "regime per curve) and the plots (DIR/plots/). See docs/sweeps.md.");
+  cmd->add_option("config", args.config, "Sweep file (TOML)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("-o,--out", args.out, "Output folder (default: out/<config name>)");
+  cmd->add_option("-j,--jobs", args.jobs,
+                  "Points run side by side (default: [sweep] jobs, else one per core; 0 = one "
+                  "per core)")
+      ->check(CLI::Range(0, 4096));
+  cmd->add_option("-s,--set", args.overrides,
+                  "Override a key of the sweep file: dotted.key=TOML value; a list sweeps it, "
+                  "e.g. 'fluid.lambda=[1.0, 10.0]'; sweep.jobs=2 sets [sweep] (repeatable)")
+      ->allow_extra_args(false);
+  cmd->add_flag("-q,--quiet", args.quiet, "No progress, notes or final message");
+  cmd->add_flag("--no-plots", args.no_plots, "Write the tables only, no plots");
+  cmd->add_option("--python", args.python, "Python with matplotlib that draws the plots")
+      ->capture_default_str();
+  cmd->add_option("--plot-script", args.plot_script,
+                  "The plotting script (default: scripts/sweep_plots.py of this source tree)");
+  return cmd;
+}
+
+namespace {
+
+std::atomic<bool> g_stop_requested{false};
+extern "C" void request_sweep_stop(int) { g_stop_requested.store(true); }
+
+int resolve_jobs(int from_command_line, int from_file) {
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  if (from_command_line > 0) return from_command_line;
+  if (from_command_line == 0) return cores;
+  return from_file > 0 ? from_file : cores;
+}
+
+}  // namespace
+
+int execute_sweep_command(const SweepCommandArgs& args) {
+  const sweep::SweepPlan plan = sweep::load_sweep(args.config, args.overrides);
+  const std::filesystem::path out =
+      args.out.empty() ? std::filesystem::path("out") / std::filesystem::path(args.config).stem()
+                       : std::filesystem::path(args.out);
+  sweep::SweepRunOptions options;
+  options.out = out;
+  options.jobs = resolve_jobs(args.jobs, plan.settings.jobs);
+  options.show_progress = !args.quiet && isatty(STDERR_FILENO);
+  options.report_failures = !args.quiet;
+  options.stop = &g_stop_requested;
+  // SIGINT/SIGTERM: the running points write a checkpoint and stop.
+  std::signal(SIGINT, request_sweep_stop);
+  std::signal(SIGTERM, request_sweep_stop);
+  const sweep::SweepOutcome outcome = sweep::run_sweep(plan, options);
+
+  if (outcome.interrupted) {
+    std::cerr << fmt::format(
+        "dilatant: interrupted: {} of {} points done, {} not finished (checkpoints written); run "
+        "the same command again to resume\n",
+        outcome.done, outcome.points, outcome.pending);
+    return 1;
+  }
+  if (outcome.done > 0)
+    analyse_and_plot_sweep(out, !args.no_plots, args.python, args.plot_script, args.quiet);
+  if (!args.quiet) {
+    std::cout << fmt::format(
+        "dilatant: sweep of {} points: {} done{}, {} failed; results in {}\n", outcome.points,
+        outcome.done,
+        outcome.skipped > 0 ? fmt::format(" ({} of them before this run)", outcome.skipped) : "",
+        outcome.failed, (out / "flowcurves.csv").string());
+  }
+  if (outcome.failed > 0) {
+    std::cerr << fmt::format(
+        "dilatant: {} of {} points failed (see the error column of flowcurves.csv); run the "
+        "same command again to retry them\n",
+        outcome.failed, outcome.points);
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace dilatant

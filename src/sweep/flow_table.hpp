@@ -1,0 +1,50 @@
+#pragma once
+// DIR/flowcurves.csv: one row per point of a sweep, sorted by point index.
+//
+// Columns, in order:
+//   the swept keys, dotted (friction.mu0, fluid.lambda, ...), as in sweep.toml;
+//   point        the point's index;
+//   status       done | failed | pending (not run yet, running, or interrupted);
+//   error        why a failed point failed (one line), else empty;
+//   phi, mu0, lambda   the curve's labels from the configuration: phi is cell.phi
+//                as requested (every point of a curve shares it; the packing's
+//                own fraction is phi_realized);
+//   shear_stress, gamma_dot, gamma_dot_err, eta, eta_err, valid, jammed, frac_bl,
+//   frac_bl_err, frac_hd, frac_over_slim, gamma_dot_bulk, gamma_dot_gap,
+//   profile_consistent, phi_realized, phi_bulk, phi_bulk_err, s_c, friction_law,
+//   normal_stress, normal_stress_err, inertial_number, viscous_number,
+//   frac_impulsive, frac_bl_persistent, mobile_spheres, strain, steps,
+//   mean_iterations, frac_steps_unconverged, wall_time_s, version
+//                from the point's summary.json (paper units; docs/shear-cell.md),
+//                empty until the point is done; eta is empty when it jammed;
+//   sample       the flow curve the point belongs to, beside phi: "mu0=0.1", plus
+//                " key=value" for every other swept key but lambda (dilatant
+//                analyze groups rows by phi and sample);
+//   start        "cold" (a new packing) or the folder of the point it continues from;
+//   dir          the point's run folder, relative to DIR.
+// Booleans are true/false, numbers the shortest text that reads back exactly;
+// a field with ',' or '"' is quoted (with '"' inside turned into ').
+#include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sweep/sweep_plan.hpp"
+
+namespace dilatant::sweep {
+
+enum class PointStatus { Pending, Running, Done, Failed };
+std::string_view status_name(PointStatus s);  // a running point is "pending" in the table
+
+struct PointRecord {
+  PointStatus status = PointStatus::Pending;
+  std::string error;       // when failed
+  nlohmann::json summary;  // when done: summary.json
+};
+
+std::string flowcurves_csv(const SweepPlan& plan, const std::vector<PointRecord>& records);
+
+// The curve label of the `sample` column.
+std::string sample_label(const SweepPlan& plan, const SweepPoint& point);
+
+}  // namespace dilatant::sweep

@@ -1,0 +1,27 @@
+#pragma once
+// The run folder of one point of a sweep, DIR/points/NNN-label/, as a previous
+// invocation left it: this is what makes re-running a sweep resume it.
+//
+//   Done       config.toml equals the point's configuration and summary.json
+//              exists: the point is finished and is skipped;
+//   Resumable  config.toml equals it and checkpoint.bin exists: the run was
+//              interrupted and continues from the checkpoint (`run --resume`);
+//   Fresh      nothing usable (no folder, or no config.toml): the point runs
+//              from the start.
+//
+// A config.toml that differs from the point's configuration means the sweep
+// file changed under an existing output folder: that is refused (InputError,
+// exit code 2) rather than mixing runs of two sweeps in one table. Comments
+// are ignored in the comparison (they name the file the sweep was read from).
+#include <filesystem>
+#include <string>
+
+#include "sweep/sweep_plan.hpp"
+
+namespace dilatant::sweep {
+
+enum class PointState { Fresh, Resumable, Done };
+
+PointState inspect_point_folder(const SweepPoint& point, const std::filesystem::path& folder);
+
+}  // namespace dilatant::sweep

@@ -1,0 +1,113 @@
+#pragma once
+// A sweep: many shear-cell runs that differ in a few keys, e.g. the points of
+// the flow curves eta(gamma_dot) for several mu0 (docs/sweeps.md).
+//
+// A sweep file is a run configuration ([cell], [friction], ...) in which any
+// key may hold a list of values instead of one:
+//
+//   [cell]
+//   phi = 0.58
+//   [friction]
+//   mu0 = [0.1, 0.3]                  # swept
+//   [fluid]
+//   lambda = [1.0, 10.0, 100.0]       # swept
+//   [sweep]                           # optional: sweep-only settings
+//   jobs = 0                          # points run side by side; 0 = all cores
+//   continuation = false              # see below
+//
+// The points are the full grid over all lists: the key listed first in the
+// file varies slowest, the last fastest (here mu0 0.1 with lambda 1, 10, 100,
+// then mu0 0.3 with the same). A key whose value is an array anyway
+// (cell.size) is swept only when given a list of arrays:
+// size = [[6.0, 5.0, 7.0], [8.0, 6.0, 9.0]].
+//
+// Instead of the grid of the whole file, `[[points]]` tables list points: each
+// holds a partial set of keys (dotted, `friction.mu0 = 0.3`, or nested tables)
+// that replace the file's values for that point; a list inside one of them
+// makes it a small grid of its own (with the file's lists):
+//
+//   [fluid]
+//   lambda = [1.0, 10.0, 100.0]
+//   [[points]]
+//   cell.phi = 0.58
+//   friction.mu0 = [0.1, 0.3]
+//   [[points]]
+//   cell.phi = 0.59
+//   friction.mu0 = 0.3
+//
+// gives 2 x 3 + 3 points. The swept keys are those holding a list anywhere or
+// set in any [[points]] table; they name the points and head the table
+// (flowcurves.csv).
+//
+// Continuation (`continuation = true`): the points of one flow curve (equal in
+// every swept key but fluid.lambda) run one after the other in increasing
+// lambda, each starting from the final state of the previous one (a rheometer
+// ramp) instead of a new packing. `continuation_strain` and
+// `continuation_transient_strain` then replace run.strain and
+// run.transient_strain for every point but the first of its curve, which is
+// where the time is saved.
+//
+// Every point's resolved configuration is validated like a run's; an error
+// names the sweep file, line and key, and the point. Sweeps run the shear cell
+// only ([scene] is an error). Each point gets solver.threads as configured
+// (default 1: points run side by side instead).
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "io/config.hpp"
+
+namespace dilatant::sweep {
+
+struct SweepSettings {
+  int jobs = 0;  // 0: one per core
+  bool continuation = false;
+  std::optional<double> continuation_strain;
+  std::optional<double> continuation_transient_strain;
+};
+
+struct SweepPoint {
+  std::size_t index = 0;
+  std::string label;   // "mu0=0.1_lambda=10", from the swept keys
+  std::string folder;  // "points/001-mu0=0.1_lambda=10", relative to the sweep's folder
+  std::vector<std::string> values;            // per swept key, its value as TOML text
+  Config config;                              // resolved and validated
+  std::optional<std::size_t> continues_from;  // index of the point whose final state it starts from
+};
+
+struct SweepPlan {
+  std::string source;  // the sweep file, as given
+  SweepSettings settings;
+  std::vector<std::string> keys;  // the swept keys, dotted ("friction.mu0"), in file order
+  std::vector<SweepPoint> points;
+};
+
+// Reads and expands a sweep file; `overrides` are `--set key=value` as for
+// `dilatant run` (a list value sweeps the key; sweep.* keys set [sweep]
+// settings); an override replaces the key in the file and in every [[points]]
+// table. Throws InputError naming file, line, key and point.
+SweepPlan load_sweep(const std::filesystem::path& file, const std::vector<std::string>& overrides);
+
+// The same from text; `source` names it in messages, relative paths resolve
+// against `base_dir`.
+SweepPlan parse_sweep(std::string_view text, std::string source,
+                      const std::filesystem::path& base_dir,
+                      const std::vector<std::string>& overrides);
+
+// The resolved sweep as a sweep file (DIR/sweep.toml): [sweep] settings, every
+// other key at the value shared by all points, and one [[points]] table per
+// point with its swept keys. Loading it gives the same points, folders and
+// configurations.
+std::string resolved_sweep_toml(const SweepPlan& plan);
+
+// The value of dotted `key` ("friction.mu0") in a resolved configuration.
+const toml::node* find_key(const toml::table& resolved, std::string_view key);
+
+// A value as short text for labels and table cells: numbers as the shortest
+// exact decimal (0.1, 10), strings bare, arrays joined by 'x' (6x5x7).
+std::string plain_text(const toml::node& value);
+
+}  // namespace dilatant::sweep

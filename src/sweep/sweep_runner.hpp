@@ -1,0 +1,49 @@
+#pragma once
+// Runs the points of a sweep side by side and keeps its folder up to date:
+//
+//   DIR/sweep.toml           the resolved sweep (sweep_plan.hpp)
+//   DIR/flowcurves.csv       one row per point (flow_table.hpp), rewritten
+//                            atomically whenever a point finishes
+//   DIR/points/NNN-label/    each point's run folder (as `dilatant run` writes),
+//                            plus error.txt when the point failed
+//
+// Work is shared by `jobs` worker threads, one point (or, with continuation,
+// one flow curve: its points in order of lambda) at a time, each run with its
+// own solver.threads (1 by default). A point that throws is recorded as failed
+// with its message and the others go on; a continued point whose predecessor
+// failed fails too ("not run: ..."). Re-running resumes (point_folder.hpp):
+// finished points are skipped, interrupted ones continue from their
+// checkpoint, failed and pending ones run again.
+//
+// When *stop becomes true (SIGINT), running points write a checkpoint and stop,
+// no new point starts, and the table is written: re-running resumes.
+#include <atomic>
+#include <cstddef>
+#include <filesystem>
+
+#include "sweep/sweep_plan.hpp"
+
+namespace dilatant::sweep {
+
+struct SweepRunOptions {
+  std::filesystem::path out;
+  int jobs = 1;                  // worker threads, >= 1
+  bool show_progress = false;    // a status line on stderr, redrawn each second
+  bool report_failures = false;  // a line on stderr per failed point
+  const std::atomic<bool>* stop = nullptr;
+};
+
+struct SweepOutcome {
+  std::size_t points = 0;
+  std::size_t done = 0;     // finished, in this invocation or before
+  std::size_t skipped = 0;  // of those, finished before this invocation
+  std::size_t failed = 0;
+  std::size_t pending = 0;  // not run (interrupted)
+  bool interrupted = false;
+};
+
+// Throws InputError, before running anything, when a point's folder holds a
+// run of another configuration.
+SweepOutcome run_sweep(const SweepPlan& plan, const SweepRunOptions& options);
+
+}  // namespace dilatant::sweep

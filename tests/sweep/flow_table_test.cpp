@@ -1,0 +1,112 @@
+// flowcurves.csv: its columns, done / failed / pending rows, and that
+// `dilatant analyze` reads it (failed and pending rows left out, curves by
+// phi and sample).
+#include "sweep/flow_table.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "analysis/analysis_input.hpp"
+#include "analysis/delimited_text.hpp"
+#include "io/io_test_files.hpp"
+#include "sweep/tiny_sweep.hpp"
+
+namespace dilatant::sweep {
+namespace {
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+nlohmann::json summary(double lambda, bool jammed) {
+  nlohmann::json j;
+  j["shear_stress"] = lambda * lambda;
+  j["gamma_dot"] = jammed ? 0.0 : lambda;
+  j["gamma_dot_err"] = 0.01 * lambda;
+  j["eta"] = jammed ? nlohmann::json(nullptr) : nlohmann::json(lambda);
+  j["valid"] = !jammed;
+  j["jammed"] = jammed;
+  j["phi"] = 0.5791;
+  j["steps"] = 120;
+  j["friction_law"] = "stribeck";
+  j["version"] = "test";
+  return j;
+}
+
+TEST(FlowTable, OneRowPerPointSweptKeysFirstThenStatusAndSummary) {
+  const SweepPlan plan = parse_sweep(test::kTinyGrid, "s.toml", ".", {});
+  std::vector<PointRecord> records(4);
+  records[0] = {PointStatus::Done, "", summary(3.0, false)};
+  records[1] = {PointStatus::Failed, "could not pack, \"really\"", {}};
+  records[2] = {PointStatus::Running, "", {}};
+  records[3] = {PointStatus::Done, "", summary(30.0, true)};
+  const auto rows = lines(flowcurves_csv(plan, records));
+  ASSERT_EQ(rows.size(), 5u);
+  EXPECT_EQ(rows[0].rfind("friction.mu0,fluid.lambda,point,status,error,phi,mu0,lambda,"
+                          "shear_stress,gamma_dot,gamma_dot_err,eta,eta_err,valid,jammed,frac_bl,",
+                          0),
+            0u)
+      << rows[0];
+  const auto header = analysis::split_fields(rows[0], ',');
+  EXPECT_EQ(header.back(), "dir");
+  const auto column = [&](std::size_t row, const std::string& name) {
+    const auto fields = analysis::split_fields(rows[row], ',');
+    EXPECT_EQ(fields.size(), header.size()) << rows[row];
+    const auto at = std::find(header.begin(), header.end(), name) - header.begin();
+    return fields.at(static_cast<std::size_t>(at));
+  };
+  EXPECT_EQ(column(1, "status"), "done");
+  EXPECT_EQ(column(1, "friction.mu0"), "0.1");
+  EXPECT_EQ(column(1, "fluid.lambda"), "3.0");
+  EXPECT_EQ(column(1, "lambda"), "3");
+  EXPECT_EQ(column(1, "phi"), "0.58");  // as requested
+  EXPECT_EQ(column(1, "phi_realized"), "0.5791");
+  EXPECT_EQ(column(1, "shear_stress"), "9");
+  EXPECT_EQ(column(1, "valid"), "true");
+  EXPECT_EQ(column(1, "steps"), "120");
+  EXPECT_EQ(column(1, "sample"), "mu0=0.1");
+  EXPECT_EQ(column(1, "start"), "cold");
+  EXPECT_EQ(column(1, "dir"), "points/000-mu0=0.1_lambda=3");
+  EXPECT_EQ(column(2, "status"), "failed");
+  EXPECT_EQ(column(2, "error"), "could not pack, 'really'");  // quoted in the file
+  EXPECT_EQ(column(2, "gamma_dot"), "");
+  EXPECT_EQ(column(3, "status"), "pending");  // running is pending in the table
+  EXPECT_EQ(column(4, "eta"), "");            // jammed
+  EXPECT_EQ(column(4, "jammed"), "true");
+}
+
+TEST(FlowTable, AnalyzeReadsDoneRowsOnlyAndGroupsCurvesByPhiAndSample) {
+  test::TempDir dir;
+  const SweepPlan plan =
+      parse_sweep(test::kTinyCell +
+                      "[fluid]\nlambda = [3.0, 30.0]\n[friction]\nlaw = [\"stribeck\", "
+                      "\"coulomb\"]\n",
+                  "s.toml", ".", {});
+  ASSERT_EQ(plan.points.size(), 4u);
+  EXPECT_EQ(sample_label(plan, plan.points[1]), "mu0=0.1 law=coulomb");
+  std::vector<PointRecord> records(4);
+  records[0] = {PointStatus::Done, "", summary(3.0, false)};
+  records[1] = {PointStatus::Done, "", summary(3.0, false)};
+  records[2] = {PointStatus::Done, "", summary(30.0, false)};
+  records[3] = {PointStatus::Failed, "boom", {}};
+  const auto file = dir.write("flowcurves.csv", flowcurves_csv(plan, records));
+  const analysis::AnalysisInput in = analysis::read_sweep_table(file);
+  // Two curves at phi 0.58: Stribeck with 2 points, Coulomb with the 1 done.
+  ASSERT_EQ(in.curves.size(), 2u);
+  EXPECT_EQ(in.curves[0].sample, "mu0=0.1 law=stribeck");
+  EXPECT_EQ(in.curves[0].points.size(), 2u);
+  EXPECT_EQ(in.curves[1].sample, "mu0=0.1 law=coulomb");
+  EXPECT_EQ(in.curves[1].points.size(), 1u);
+  // Nothing finished: a table without results, said so.
+  std::vector<PointRecord> none(4);
+  const auto empty = dir.write("none.csv", flowcurves_csv(plan, none));
+  const std::string message = test::input_error_message([&] { analysis::read_sweep_table(empty); });
+  EXPECT_NE(message.find("no finished point"), std::string::npos) << message;
+}
+
+}  // namespace
+}  // namespace dilatant::sweep
