@@ -1,0 +1,22 @@
+#pragma once
+// Internals of the sweep reader, shared by sweep_plan*.cpp; not part of the API.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sweep/sweep_plan.hpp"
+
+namespace dilatant::sweep::detail {
+
+std::string join(const std::vector<std::string>& parts, std::string_view separator);
+
+// Each point's values, label, folder and config.source. Only once all points
+// are expanded: the folder numbers are as wide as the largest index.
+void name_points(SweepPlan& plan);
+
+// Continuation: chains of points equal in all swept keys but lambda, by lambda.
+// Throws InputError when lambda is not swept or a continued point's strains
+// leave no measured part.
+void link_continuations(SweepPlan& plan);
+
+}  // namespace dilatant::sweep::detail
