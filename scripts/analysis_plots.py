@@ -14,52 +14,30 @@ Needs Debian's python3-matplotlib and python3-numpy; exits with status 3 and one
 line on stderr when they are missing (the C++ command then reports the plots as
 skipped). Files are written to NAME.part and renamed, like every result file.
 """
-import csv
 import json
 import math
-import os
 import sys
 from pathlib import Path
 
-try:
-    import matplotlib
+# plot_common lies beside this script, whose folder is not on the path under
+# python3 -P or PYTHONSAFEPATH. Importing it exits 3 without matplotlib.
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from plot_common import RATE, VISCOSITY, read_rows, save  # noqa: E402
 
-    matplotlib.use("Agg")
-    matplotlib.rcParams["svg.hashsalt"] = "dilatant"
-    import matplotlib.pyplot as plt
-    import matplotlib.ticker
-    import numpy as np
-except ImportError as e:  # the caller reports this line
-    print(f"matplotlib/numpy not available ({e})", file=sys.stderr)
-    sys.exit(3)
+import matplotlib  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
+import numpy as np  # noqa: E402
 
 
 def number(text):
     return float(text) if text not in ("", None) else math.nan
 
 
-def read_rows(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
-
-
 def axis_labels(units):
     if units["shear_stress"] == "Pa":
         return r"shear rate $\dot\gamma$ [1/s]", r"viscosity $\eta$ [Pa s]"
-    return (r"shear rate $\dot\gamma$ [$\eta_f/(\rho_p R^2)$]",
-            r"viscosity $\eta$ [$\eta_f$]")
-
-
-def save(fig, out, name):
-    for ext in ("png", "svg"):
-        final = out / f"{name}.{ext}"
-        part = out / f"{name}.{ext}.part"
-        # No date in the SVG and fixed element ids: re-drawing the same data gives the
-        # same file (the docs' figures do not change when regenerated).
-        metadata = {"Date": None} if ext == "svg" else None
-        fig.savefig(part, format=ext, dpi=150, bbox_inches="tight", metadata=metadata)
-        os.replace(part, final)
-    plt.close(fig)
+    return RATE, VISCOSITY
 
 
 def flow_curves(out, samples, curves, points, units):

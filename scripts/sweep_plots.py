@@ -28,25 +28,23 @@ Files are written to NAME.part and renamed, like every result file.
 """
 import csv
 import math
-import os
 import sys
 from pathlib import Path
 
+# plot_common lies beside this script, whose folder is not on the path under
+# python3 -P or PYTHONSAFEPATH. Importing it exits 3 without matplotlib.
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from plot_common import RATE, VISCOSITY, exit_missing, read_rows, save  # noqa: E402
+
 try:
     import tomllib
+except ImportError as e:  # Python < 3.11
+    exit_missing(e)
 
-    import matplotlib
+import matplotlib  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
 
-    matplotlib.use("Agg")
-    matplotlib.rcParams["svg.hashsalt"] = "dilatant"
-    import matplotlib.pyplot as plt
-    import numpy as np
-except ImportError as e:  # the caller reports this line
-    print(f"matplotlib/numpy not available ({e})", file=sys.stderr)
-    sys.exit(3)
-
-RATE = r"shear rate $\dot\gamma$ [$\eta_f/(\rho_p R^2)$]"
-VISCOSITY = r"viscosity $\eta$ [$\eta_f$]"
 STRESS_UNIT = r"$\eta_f^2/(\rho_p R^2)$"
 MARKERS = ["o", "s", "^", "D", "v", "P", "X", "<", ">"]
 INVALID = "0.6"  # grey of points outside the model's validity
@@ -69,24 +67,6 @@ def stress_text(v):
     mantissa = v / 10 ** exponent
     head = "" if abs(mantissa - 1) < 5e-3 else f"{mantissa:.3g}\\times"
     return f"{head}10^{{{exponent}}}"
-
-
-def read_rows(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
-
-
-def save(fig, out, name):
-    out.mkdir(parents=True, exist_ok=True)
-    for ext in ("png", "svg"):
-        final = out / f"{name}.{ext}"
-        part = out / f"{name}.{ext}.part"
-        # No date in the SVG and fixed element ids: re-drawing the same data gives
-        # the same file.
-        metadata = {"Date": None} if ext == "svg" else None
-        fig.savefig(part, format=ext, dpi=150, bbox_inches="tight", metadata=metadata)
-        os.replace(part, final)
-    plt.close(fig)
 
 
 class Curve:
