@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
-# Runs the sweeps of the paper's figures (examples/paper/: Fig. 2, Fig. 1, the
-# coulomb control) at the paper's cell size and copies their tables and figures
-# into docs/paper-reproduction/<sweep>/ for docs/paper-reproduction.md.
+# Runs the sweeps of the paper's figures (examples/paper/: Fig. 2, the coulomb
+# control, the denser boundary cells, Fig. 1's finer curve) at the paper's cell
+# size, copies their tables and figures into docs/paper-reproduction/<sweep>/
+# and writes docs/paper-reproduction/tables.md for docs/paper-reproduction.md.
 # Hours on the 2-core machine (docs/sweeps.md "The paper's figures"); resumable:
 # run it again after an interruption and finished points are skipped.
 #   scripts/docs-paper.sh [dilatant sweep options...]   e.g. --jobs 2
 # Environment: DILATANT_PAPER_OUT (default out/paper), DILATANT_PAPER_DOCS
-# (default docs/paper-reproduction), DILATANT_SKIP_BUILD=1 to use build/ as it is.
+# (default docs/paper-reproduction), DILATANT_PAPER_SWEEPS (default
+# "fig2 coulomb boundary fig1"), DILATANT_SKIP_BUILD=1 to use build/ as it is.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 out=${DILATANT_PAPER_OUT:-out/paper}
@@ -16,7 +18,7 @@ if [[ -z ${DILATANT_SKIP_BUILD:-} ]]; then
   bash scripts/build.sh release dilatant
 fi
 status=0
-for sweep in fig2 fig1 coulomb; do
+for sweep in ${DILATANT_PAPER_SWEEPS:-fig2 coulomb boundary fig1}; do
   # A failed point does not stop the others (exit 1): copy what there is, go on.
   ./build/dilatant sweep "examples/paper/$sweep.toml" --out "$out/$sweep" "$@" || status=$?
   mkdir -p "$docs/$sweep"
@@ -24,4 +26,6 @@ for sweep in fig2 fig1 coulomb; do
   if [[ -d $out/$sweep/analysis ]]; then cp "$out/$sweep/analysis/curves.csv" "$docs/$sweep/"; fi
   if [[ -d $out/$sweep/plots ]]; then cp "$out/$sweep"/plots/*.{png,svg} "$docs/$sweep/"; fi
 done
+/usr/bin/python3 scripts/paper_tables.py "$docs" >"$docs/tables.md.part"
+mv "$docs/tables.md.part" "$docs/tables.md"
 exit "$status"

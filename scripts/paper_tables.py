@@ -1,0 +1,129 @@
+#!/usr/bin/python3
+"""Markdown tables of the paper reproduction, from the sweep tables in docs/.
+
+Usage: paper_tables.py DOCS_DIR > DOCS_DIR/tables.md
+
+DOCS_DIR holds one folder per sweep (fig2, coulomb, boundary, fig1), each with
+the `flowcurves.csv` (and `curves.csv`, the regime per curve) that
+scripts/docs-paper.sh copied from its sweep folder. Every number printed here
+is read from those files; nothing is computed but tau = lambda^2 and sums of
+run times. Points outside the model's validity are marked, never dropped.
+"""
+import csv
+import math
+import sys
+from pathlib import Path
+
+SWEEPS = [
+    ("fig2", "Fig. 2: flow curves for five mu0 at phi 0.58 and mu0 0.3 at phi 0.59"),
+    ("fig1", "Fig. 1b-d: the phi 0.58, mu0 0.1 curve, finer in lambda"),
+    ("coulomb", "Control: `coulomb` law (no hydrodynamics), phi 0.58, mu0 0.1"),
+    ("boundary", "Denser cells: where does DST appear?"),
+]
+
+
+def rows_of(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def num(text):
+    try:
+        return float(text)
+    except (TypeError, ValueError):
+        return math.nan
+
+
+def fmt(v, digits=3):
+    if not math.isfinite(v):
+        return ""
+    return f"{v:.{digits}g}"
+
+
+def with_error(row, key):
+    v, e = num(row.get(key)), num(row.get(key + "_err"))
+    if not math.isfinite(v):
+        return ""
+    return f"{fmt(v)} ± {fmt(e, 2)}" if math.isfinite(e) else fmt(v)
+
+
+def point_state(row):
+    if row.get("status") != "done":
+        return row.get("status", "?") + (f": {row['error']}" if row.get("error") else "")
+    if row.get("jammed") == "true":
+        return "**jammed**"
+    if row.get("valid") == "true":
+        return "valid"
+    reasons = []
+    if num(row.get("frac_over_slim")) > 0.05:
+        reasons.append("s > s_lim")
+    if row.get("profile_consistent") == "false":
+        reasons.append("profile")
+    return "invalid (" + ", ".join(reasons or ["?"]) + ")"
+
+
+def points_table(rows):
+    head = ("| phi | mu0 | lambda | tau | gamma_dot | eta | P_BL | beyond s_lim "
+            "| gamma_dot_bulk / gap | I | start | strain | run time | state |")
+    lines = [head, "|" + "---|" * 14]
+    for r in rows:
+        lam = num(r.get("lambda"))
+        bulk, gap = num(r.get("gamma_dot_bulk")), num(r.get("gamma_dot_gap"))
+        ratio = fmt(bulk / gap, 2) if gap > 0 else ""
+        lines.append("| " + " | ".join([
+            r.get("phi", ""), r.get("mu0", ""), fmt(lam), fmt(lam * lam),
+            with_error(r, "gamma_dot"), with_error(r, "eta"), fmt(num(r.get("frac_bl")), 2),
+            fmt(num(r.get("frac_over_slim")), 2), ratio, fmt(num(r.get("inertial_number")), 2),
+            r.get("start", ""), fmt(num(r.get("strain"))), fmt(num(r.get("wall_time_s")), 3) + " s",
+            point_state(r)]) + " |")
+    return lines
+
+
+def curves_table(path):
+    lines = ["| curve | phi | eta_N | onset stress | n (95% interval) | regime | Bagnold |",
+             "|---|---|---|---|---|---|---|"]
+    for c in rows_of(path):
+        n = num(c.get("n"))
+        interval = f"{fmt(n)} ({fmt(num(c['n_low']))}-{fmt(num(c['n_high']))})" \
+            if math.isfinite(n) else ""
+        lines.append("| " + " | ".join([
+            c["sample"], c["phi"], fmt(num(c.get("eta_newtonian"))),
+            fmt(num(c.get("onset_stress"))), interval,
+            c["regime"] + (f" ({c['dst_evidence']})" if c.get("dst_evidence") else ""),
+            c.get("bagnold", "")]) + " |")
+    return lines
+
+
+def main():
+    if len(sys.argv) != 2:
+        print(__doc__, file=sys.stderr)
+        return 2
+    docs = Path(sys.argv[1])
+    out = ["# Paper reproduction: every point",
+           "",
+           "Written by `scripts/paper_tables.py` from the `flowcurves.csv` and",
+           "`curves.csv` beside this file (`bash scripts/docs-paper.sh`). Paper units:",
+           "gamma_dot in eta_f/(rho_p R^2), eta in eta_f, tau = lambda^2 in",
+           "eta_f^2/(rho_p R^2). `start`: cold (new packing) or the point it continues.",
+           "Run time: wall-clock seconds of one point on one core.", ""]
+    for name, title in SWEEPS:
+        table = docs / name / "flowcurves.csv"
+        if not table.exists():
+            continue
+        rows = rows_of(table)
+        versions = sorted({r["version"] for r in rows if r.get("version")})
+        total = sum(num(r.get("wall_time_s")) for r in rows if math.isfinite(num(r.get("wall_time_s"))))
+        out += [f"## {title}", "",
+                f"`{name}/flowcurves.csv`, settings in `{name}/sweep.toml`; dilatant "
+                f"{', '.join(versions) or '?'}; {len(rows)} points, "
+                f"{total / 3600:.2f} core-hours.", ""]
+        out += points_table(rows) + [""]
+        if (docs / name / "curves.csv").exists():
+            out += ["Per curve (`dilatant analyze`'s classifier, docs/sweeps.md):", ""]
+            out += curves_table(docs / name / "curves.csv") + [""]
+    print("\n".join(out))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
