@@ -8,7 +8,7 @@
 #   scripts/docs-paper.sh [dilatant sweep options...]   e.g. --jobs 2
 # Environment: DILATANT_PAPER_OUT (default out/paper), DILATANT_PAPER_DOCS
 # (default docs/paper-reproduction), DILATANT_PAPER_SWEEPS (default
-# "fig2 coulomb boundary fig1"), DILATANT_SKIP_BUILD=1 to use build/ as it is.
+# "fig2 coulomb boundary fig1 dst-checks"), DILATANT_SKIP_BUILD=1 to use build/ as it is.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 out=${DILATANT_PAPER_OUT:-out/paper}
@@ -18,7 +18,7 @@ if [[ -z ${DILATANT_SKIP_BUILD:-} ]]; then
   bash scripts/build.sh release dilatant
 fi
 status=0
-for sweep in ${DILATANT_PAPER_SWEEPS:-fig2 coulomb boundary fig1}; do
+for sweep in ${DILATANT_PAPER_SWEEPS:-fig2 coulomb boundary fig1 dst-checks}; do
   # A failed point does not stop the others (exit 1): copy what there is, go on.
   ./build/dilatant sweep "examples/paper/$sweep.toml" --out "$out/$sweep" "$@" || status=$?
   mkdir -p "$docs/$sweep"

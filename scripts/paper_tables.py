@@ -19,6 +19,7 @@ SWEEPS = [
     ("fig1", "Fig. 1b-d: the phi 0.58, mu0 0.1 curve, finer in lambda"),
     ("coulomb", "Control: `coulomb` law (no hydrodynamics), phi 0.58, mu0 0.1"),
     ("boundary", "Denser cells: where does DST appear?"),
+    ("dst-checks", "phi 0.58, mu0 0.4 at lambda 100: run length, time step, wall mass"),
 ]
 
 
