@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
-# Runs the sweeps of the paper's figures (examples/paper/: Fig. 2, the coulomb
-# control, the denser boundary cells, Fig. 1's finer curve) at the paper's cell
-# size, copies their tables and figures into docs/paper-reproduction/<sweep>/
+# Runs the sweeps of the paper's figures (examples/paper/: Fig. 2, whose mu0 0.1
+# curve gives Fig. 1b-d, the coulomb control, the denser boundary cells, the DST
+# checks) at the paper's cell size, copies their tables and figures into docs/paper-reproduction/<sweep>/
 # and writes docs/paper-reproduction/tables.md for docs/paper-reproduction.md.
 # Hours on the 2-core machine (docs/sweeps.md "The paper's figures"); resumable:
 # run it again after an interruption and finished points are skipped.
 #   scripts/docs-paper.sh [dilatant sweep options...]   e.g. --jobs 2
 # Environment: DILATANT_PAPER_OUT (default out/paper), DILATANT_PAPER_DOCS
 # (default docs/paper-reproduction), DILATANT_PAPER_SWEEPS (default
-# "fig2 coulomb boundary fig1 dst-checks"), DILATANT_SKIP_BUILD=1 to use build/ as it is.
+# "fig2 coulomb boundary dst-checks"), DILATANT_SKIP_BUILD=1 to use build/ as it is.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 out=${DILATANT_PAPER_OUT:-out/paper}
@@ -18,7 +18,7 @@ if [[ -z ${DILATANT_SKIP_BUILD:-} ]]; then
   bash scripts/build.sh release dilatant
 fi
 status=0
-for sweep in ${DILATANT_PAPER_SWEEPS:-fig2 coulomb boundary fig1 dst-checks}; do
+for sweep in ${DILATANT_PAPER_SWEEPS:-fig2 coulomb boundary dst-checks}; do
   # A failed point does not stop the others (exit 1): copy what there is, go on.
   ./build/dilatant sweep "examples/paper/$sweep.toml" --out "$out/$sweep" "$@" || status=$?
   mkdir -p "$docs/$sweep"

@@ -3,7 +3,7 @@
 
 Usage: paper_tables.py DOCS_DIR > DOCS_DIR/tables.md
 
-DOCS_DIR holds one folder per sweep (fig2, coulomb, boundary, fig1), each with
+DOCS_DIR holds one folder per sweep (fig2, coulomb, boundary, dst-checks), each with
 the `flowcurves.csv` (and `curves.csv`, the regime per curve) that
 scripts/docs-paper.sh copied from its sweep folder. Every number printed here
 is read from those files; nothing is computed but tau = lambda^2 and sums of
@@ -16,7 +16,6 @@ from pathlib import Path
 
 SWEEPS = [
     ("fig2", "Fig. 2: flow curves for five mu0 at phi 0.58 and mu0 0.3 at phi 0.59"),
-    ("fig1", "Fig. 1b-d: the phi 0.58, mu0 0.1 curve, finer in lambda"),
     ("coulomb", "Control: `coulomb` law (no hydrodynamics), phi 0.58, mu0 0.1"),
     ("boundary", "Denser cells: where does DST appear?"),
     ("dst-checks", "phi 0.58, mu0 0.4 at lambda 100: run length, time step, wall mass"),
