@@ -117,7 +117,10 @@ nlohmann::json cell_summary(const Config& config, const ShearCellState& s, const
   j["frac_bl_persistent_err"] = bl_persistent.error;
   j["frac_hd"] = 1.0 - bl.mean;
   j["frac_over_slim"] = over.mean;
-  j["valid"] = !s.jammed && over.mean <= 0.05 && profile_consistent;
+  // s_lim bounds the lubrication picture, so it limits validity only for a law
+  // that reads s: the coulomb control has no lubrication to break down.
+  const bool lubricated = config.friction.law == FrictionLawKind::Stribeck;
+  j["valid"] = !s.jammed && (!lubricated || over.mean <= 0.05) && profile_consistent;
   j["bottom_wall_force_x"] = fx.mean;
   j["bottom_wall_force_x_err"] = fx.error;
   j["top_wall_force_z"] = fz_top.mean;  // push of the particles on the top wall
