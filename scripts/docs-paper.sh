@@ -2,7 +2,8 @@
 # Runs the sweeps of the paper's figures (examples/paper/: Fig. 2, whose mu0 0.1
 # curve gives Fig. 1b-d, the coulomb control, the denser boundary cells, the DST
 # checks) at the paper's cell size, copies their tables and figures into docs/paper-reproduction/<sweep>/
-# and writes docs/paper-reproduction/tables.md for docs/paper-reproduction.md.
+# and writes docs/paper-reproduction/tables.md and control.png (Stribeck against
+# the coulomb control) for docs/paper-reproduction.md.
 # Hours on the 2-core machine (docs/sweeps.md "The paper's figures"); resumable:
 # run it again after an interruption and finished points are skipped.
 #   scripts/docs-paper.sh [dilatant sweep options...]   e.g. --jobs 2
@@ -26,6 +27,9 @@ for sweep in ${DILATANT_PAPER_SWEEPS:-fig2 coulomb boundary dst-checks}; do
   if [[ -d $out/$sweep/analysis ]]; then cp "$out/$sweep/analysis/curves.csv" "$docs/$sweep/"; fi
   if [[ -d $out/$sweep/plots ]]; then cp "$out/$sweep"/plots/*.{png,svg} "$docs/$sweep/"; fi
 done
+if [[ -f $docs/fig2/flowcurves.csv && -f $docs/coulomb/flowcurves.csv ]]; then
+  /usr/bin/python3 scripts/paper_figures.py "$docs"
+fi
 /usr/bin/python3 scripts/paper_tables.py "$docs" >"$docs/tables.md.part"
 mv "$docs/tables.md.part" "$docs/tables.md"
 exit "$status"

@@ -11,6 +11,7 @@ run times. Points outside the model's validity are marked, never dropped.
 """
 import csv
 import math
+import re
 import sys
 from pathlib import Path
 
@@ -62,11 +63,18 @@ def point_state(row):
     return "invalid (" + ", ".join(reasons or ["?"]) + ")"
 
 
+def start_of(row):
+    """cold, or "after lambda X" for a point continued from its predecessor."""
+    m = re.search(r"lambda=([^_/]+)", row.get("start", ""))
+    return f"after lambda {m.group(1)}" if m else row.get("start", "")
+
+
 def points_table(rows):
     head = ("| phi | mu0 | lambda | tau | gamma_dot | eta | P_BL | beyond s_lim "
             "| gamma_dot_bulk / gap | I | start | strain | run time | state |")
     lines = [head, "|" + "---|" * 14]
-    for r in rows:
+    # One curve after the other, each in increasing stress.
+    for r in sorted(rows, key=lambda r: (num(r.get("phi")), num(r.get("mu0")), num(r.get("lambda")))):
         lam = num(r.get("lambda"))
         bulk, gap = num(r.get("gamma_dot_bulk")), num(r.get("gamma_dot_gap"))
         ratio = fmt(bulk / gap, 2) if gap > 0 else ""
@@ -74,7 +82,7 @@ def points_table(rows):
             r.get("phi", ""), r.get("mu0", ""), fmt(lam), fmt(lam * lam),
             with_error(r, "gamma_dot"), with_error(r, "eta"), fmt(num(r.get("frac_bl")), 2),
             fmt(num(r.get("frac_over_slim")), 2), ratio, fmt(num(r.get("inertial_number")), 2),
-            r.get("start", ""), fmt(num(r.get("strain"))), fmt(num(r.get("wall_time_s")), 3) + " s",
+            start_of(r), fmt(num(r.get("strain"))), fmt(num(r.get("wall_time_s")), 3) + " s",
             point_state(r)]) + " |")
     return lines
 
@@ -104,7 +112,8 @@ def main():
            "Written by `scripts/paper_tables.py` from the `flowcurves.csv` and",
            "`curves.csv` beside this file (`bash scripts/docs-paper.sh`). Paper units:",
            "gamma_dot in eta_f/(rho_p R^2), eta in eta_f, tau = lambda^2 in",
-           "eta_f^2/(rho_p R^2). `start`: cold (new packing) or the point it continues.",
+           "eta_f^2/(rho_p R^2). `start`: cold (new packing) or the lambda whose final",
+           "state the point continues.",
            "Run time: wall-clock seconds of one point on one core.", ""]
     for name, title in SWEEPS:
         table = docs / name / "flowcurves.csv"
