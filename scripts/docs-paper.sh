@@ -25,7 +25,12 @@ for sweep in ${DILATANT_PAPER_SWEEPS:-fig2 coulomb boundary dst-checks}; do
   mkdir -p "$docs/$sweep"
   cp "$out/$sweep/flowcurves.csv" "$out/$sweep/sweep.toml" "$docs/$sweep/"
   if [[ -d $out/$sweep/analysis ]]; then cp "$out/$sweep/analysis/curves.csv" "$docs/$sweep/"; fi
-  if [[ -d $out/$sweep/plots ]]; then cp "$out/$sweep"/plots/*.{png,svg} "$docs/$sweep/"; fi
+  # Fig. 1b-d come from fig2's mu0 0.1 curve; the other sweeps need their flow curves only.
+  plots=(flow_curves)
+  if [[ $sweep == fig2 ]]; then plots+=(fig1b_viscosity fig1c_sommerfeld fig1d_contacts); fi
+  for plot in "${plots[@]}"; do
+    if [[ -f $out/$sweep/plots/$plot.png ]]; then cp "$out/$sweep/plots/$plot".{png,svg} "$docs/$sweep/"; fi
+  done
 done
 if [[ -f $docs/fig2/flowcurves.csv && -f $docs/coulomb/flowcurves.csv ]]; then
   /usr/bin/python3 scripts/paper_figures.py "$docs"
