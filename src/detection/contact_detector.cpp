@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "friction/sommerfeld.hpp"
+#include "geometry/reduced_radius.hpp"
 
 namespace dilatant {
 

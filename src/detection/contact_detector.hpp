@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "solver/contact.hpp"
+#include "detection/contact.hpp"
 #include "world/world.hpp"
 
 namespace dilatant {

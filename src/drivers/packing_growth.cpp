@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "boundary/fixed_walls.hpp"
 #include "detection/contact_detector.hpp"
 #include "friction/coulomb_law.hpp"
 #include "solver/time_stepper.hpp"
@@ -28,11 +29,11 @@ double largest_overlap(const World& world) {
   return overlap;
 }
 
-double project_out_overlaps(World& world, TimeStepper& projector) {
+double project_out_overlaps(World& world, TimeStepper& projector, Boundary& walls) {
   Bodies& b = world.bodies;
   std::fill(b.velocity.begin(), b.velocity.end(), Vec3::Zero());
   std::fill(b.angular_velocity.begin(), b.angular_velocity.end(), Vec3::Zero());
-  projector.step(world);
+  projector.step(world, &walls);
   std::fill(b.velocity.begin(), b.velocity.end(), Vec3::Zero());
   std::fill(b.angular_velocity.begin(), b.angular_velocity.end(), Vec3::Zero());
   return largest_overlap(world);
@@ -40,7 +41,8 @@ double project_out_overlaps(World& world, TimeStepper& projector) {
 
 }  // namespace
 
-GrowthReport grow_to_full_size(World& world, std::size_t first, double initial_scale) {
+GrowthReport grow_to_full_size(World& world, std::size_t first, double initial_scale,
+                               const std::vector<BodyGroup>& group) {
   Bodies& b = world.bodies;
   const std::vector<double> final_radius(b.radius.begin(), b.radius.end());
   const double r_min =
@@ -48,18 +50,21 @@ GrowthReport grow_to_full_size(World& world, std::size_t first, double initial_s
   const Vec3 gravity = world.gravity;
   world.gravity = Vec3::Zero();
   const double time = world.time;
-  TimeStepper projector(CoulombLaw{0.0, 0.0}, SolverSettings{1e-4, 500}, 1.0);
+  const CoulombLaw frictionless{.mu0 = 0.0, .eta_f = 0.0};
+  TimeStepper projector(frictionless, SolverSettings{.tolerance = 1e-4, .max_iterations = 500},
+                        1.0);
+  FixedWalls walls(group, frictionless);
 
   GrowthReport report;
   for (double scale = initial_scale; scale < 1.0;) {
     scale = std::min(1.0, scale * kInflationFactor);
     for (std::size_t i = first; i < b.size(); ++i) b.radius[i] = scale * final_radius[i];
-    report.max_overlap = project_out_overlaps(world, projector);
+    report.max_overlap = project_out_overlaps(world, projector, walls);
     ++report.inflation_steps;
   }
   while (report.max_overlap > kPackingOverlapTolerance * r_min &&
          report.relaxation_steps < kMaxFinalRelaxations) {
-    report.max_overlap = project_out_overlaps(world, projector);
+    report.max_overlap = project_out_overlaps(world, projector, walls);
     ++report.relaxation_steps;
   }
   world.gravity = gravity;

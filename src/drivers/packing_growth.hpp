@@ -8,7 +8,9 @@
 // g + dt u_n >= 0 of the time step), which are then applied and forgotten.
 // Fixed bodies (walls) and planes take part as immovable obstacles.
 #include <cstddef>
+#include <vector>
 
+#include "boundary/body_group.hpp"
 #include "world/world.hpp"
 
 namespace dilatant {
@@ -23,7 +25,9 @@ struct GrowthReport {
 };
 
 // Grows bodies [first, end) from `initial_scale` x their radius to full size.
-// Radii in `world` must be the final ones; masses are left untouched.
-GrowthReport grow_to_full_size(World& world, std::size_t first, double initial_scale);
+// Radii in `world` must be the final ones; masses are left untouched. `group`
+// names the bodies of the walls (empty: none), which stay where they are.
+GrowthReport grow_to_full_size(World& world, std::size_t first, double initial_scale,
+                               const std::vector<BodyGroup>& group = {});
 
 }  // namespace dilatant

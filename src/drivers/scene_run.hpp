@@ -1,21 +1,15 @@
 #pragma once
 // Runs a scene to run.time and writes its results folder:
 //   config.toml        the resolved configuration
-//   trajectory.csv     particles every scene.trajectory_interval (SPEC §2)
+//   trajectory.csv     particles every scene.trajectory_interval (docs/model.md)
 //   timeseries.csv     every step: time, contacts, solver iterations and residual,
 //                      kinetic energy, largest overlap
 //   contacts.csv       contacts carrying load at the end
 //   summary.json       run totals, solver convergence, version
-#include <filesystem>
-
+#include "drivers/run_options.hpp"
 #include "io/config.hpp"
 
 namespace dilatant {
-
-struct RunOptions {
-  std::filesystem::path out_dir;
-  bool quiet = false;
-};
 
 struct SceneOutcome {
   long steps = 0;

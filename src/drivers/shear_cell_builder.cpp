@@ -9,8 +9,8 @@
 #include <random>
 #include <stdexcept>
 
+#include "boundary/wall_monolayer.hpp"
 #include "drivers/packing_growth.hpp"
-#include "drivers/rough_wall.hpp"
 
 namespace dilatant {
 
@@ -18,23 +18,24 @@ namespace {
 
 double sphere_volume(double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r; }
 
-void add_wall(World& world, const std::vector<WallSphere>& spheres, BodyGroup group,
-              double density) {
+void add_wall(World& world, std::vector<BodyGroup>& groups, const std::vector<WallSphere>& spheres,
+              BodyGroup group, double density) {
   for (const WallSphere& s : spheres) {
     world.bodies.add_sphere(static_cast<std::int64_t>(world.bodies.size()), s.position, s.radius,
                             density, /*fixed=*/true);
-    world.group.push_back(group);
+    groups.push_back(group);
   }
 }
 
 }  // namespace
 
-World build_shear_cell(const Config& config, ShearCellGeometry& geometry) {
+World build_shear_cell(const Config& config, ShearCellGeometry& geometry, RoughWalls& walls) {
   const CellConfig& cell = *config.cell;
   const double lx = cell.size[0], ly = cell.size[1], lz = cell.size[2];
   std::mt19937_64 rng(static_cast<std::uint64_t>(cell.seed));
 
   World world;
+  std::vector<BodyGroup> group;  // per body
   world.box.length = Vec3(lx, ly, lz);
   world.box.periodic = {true, true, false};
   world.planes.push_back(Plane{Vec3::Zero(), Vec3::UnitZ()});
@@ -42,8 +43,8 @@ World build_shear_cell(const Config& config, ShearCellGeometry& geometry) {
 
   const auto bottom = random_monolayer(lx, ly, 0.0, cell.radius_min, cell.radius_max, rng);
   const auto top = random_monolayer(lx, ly, lz, cell.radius_min, cell.radius_max, rng);
-  add_wall(world, bottom, BodyGroup::BottomWall, config.density);
-  add_wall(world, top, BodyGroup::TopWall, config.density);
+  add_wall(world, group, bottom, BodyGroup::BottomWall, config.density);
+  add_wall(world, group, top, BodyGroup::TopWall, config.density);
   double wall_radius_sum = 0.0;
   for (const auto& s : bottom) wall_radius_sum += s.radius;
   for (const auto& s : top) wall_radius_sum += s.radius;
@@ -69,12 +70,12 @@ World build_shear_cell(const Config& config, ShearCellGeometry& geometry) {
   for (double r : radii) {
     world.bodies.add_sphere(static_cast<std::int64_t>(world.bodies.size()),
                             Vec3(ux(rng), uy(rng), uz(rng)), r, config.density, false);
-    world.group.push_back(BodyGroup::Particle);
+    group.push_back(BodyGroup::Particle);
   }
 
   // Start the growth where random positions overlap little (phi ~ 0.2).
   const double initial_scale = std::min(1.0, std::cbrt(0.2 / cell.phi));
-  const GrowthReport growth = grow_to_full_size(world, geometry.first_mobile, initial_scale);
+  const GrowthReport growth = grow_to_full_size(world, geometry.first_mobile, initial_scale, group);
   geometry.growth_steps = growth.inflation_steps + growth.relaxation_steps;
   geometry.max_overlap = growth.max_overlap;
   if (growth.max_overlap > kPackingOverlapTolerance * cell.radius_min) {
@@ -99,7 +100,7 @@ World build_shear_cell(const Config& config, ShearCellGeometry& geometry) {
   SlidingWall wall;
   double wall_mass = 0.0;
   for (std::size_t i = 0; i < world.bodies.size(); ++i) {
-    if (world.group[i] != BodyGroup::TopWall) continue;
+    if (group[i] != BodyGroup::TopWall) continue;
     wall.spheres.push_back(static_cast<std::int32_t>(i));
     wall_mass += config.density * sphere_volume(world.bodies.radius[i]);
   }
@@ -111,11 +112,11 @@ World build_shear_cell(const Config& config, ShearCellGeometry& geometry) {
   // in the paper's cell).
   wall.velocity = cell.initial_shear_rate * lz;
   for (std::size_t i = 0; i < world.bodies.size(); ++i) {
-    if (world.group[i] == BodyGroup::TopWall) world.bodies.velocity[i] = Vec3(wall.velocity, 0, 0);
-    if (world.group[i] != BodyGroup::Particle) continue;
+    if (group[i] == BodyGroup::TopWall) world.bodies.velocity[i] = Vec3(wall.velocity, 0, 0);
+    if (group[i] != BodyGroup::Particle) continue;
     world.bodies.velocity[i] = Vec3(cell.initial_shear_rate * world.bodies.position[i][2], 0, 0);
   }
-  world.sliding_wall = wall;
+  walls = RoughWalls(std::move(group), std::move(wall), CoulombLaw{});
   return world;
 }
 

@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "boundary/rough_walls.hpp"
 #include "io/config.hpp"
 #include "world/world.hpp"
 
@@ -30,7 +31,9 @@ struct ShearCellGeometry {
 };
 
 // Builds the walls and a packing of mobile spheres at config.cell->phi,
-// reproducibly from cell.seed. eta_f etc. are not part of the world.
-World build_shear_cell(const Config& config, ShearCellGeometry& geometry);
+// reproducibly from cell.seed: the world (walls' spheres first, then the mobile
+// ones numbered by height) and its boundary, the rough walls. The walls'
+// contact law is left at its default: it depends on eta_f, a run setting.
+World build_shear_cell(const Config& config, ShearCellGeometry& geometry, RoughWalls& walls);
 
 }  // namespace dilatant

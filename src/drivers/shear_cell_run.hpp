@@ -1,6 +1,6 @@
 #pragma once
-// Runs the stress-controlled shear cell to run.strain (or until it jams) and
-// writes its results folder (SPEC §2):
+// Runs the stress-controlled shear cell (drivers/shear_cell.hpp) to run.strain
+// (or until it jams) and writes its results folder (docs/shear-cell.md):
 //   config.toml, summary.json, timeseries.csv, velocity_profile.csv,
 //   sommerfeld_hist.csv, contacts.csv, checkpoint.bin, snapshots/*.vtp + cell.pvd
 //
@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <utility>
 
-#include "drivers/scene_run.hpp"
+#include "drivers/run_options.hpp"
 #include "io/config.hpp"
 
 namespace dilatant {

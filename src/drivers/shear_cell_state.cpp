@@ -24,7 +24,7 @@ void visit_state(Archive& a, State& s) {
   a.vector(b.inv_mass);
   a.vector(b.inv_inertia);
   a.vector(b.id);
-  a.vector(s.world.group);
+  a.vector(s.walls.groups());
   std::uint64_t planes = s.world.planes.size();
   a.value(planes);
   s.world.planes.resize(planes);
@@ -36,7 +36,7 @@ void visit_state(Archive& a, State& s) {
   a.value(s.world.box.periodic);
   a.value(s.world.gravity);
   a.value(s.world.time);
-  auto& wall = *s.world.sliding_wall;
+  auto& wall = s.walls.top();
   a.vector(wall.spheres);
   a.value(wall.mass);
   a.value(wall.drive_force);
@@ -92,7 +92,6 @@ ShearCellState load_checkpoint(const std::filesystem::path& file) {
   r.value(magic);
   if (magic != kMagic) throw std::runtime_error(file.string() + ": not a dilatant checkpoint");
   ShearCellState s;
-  s.world.sliding_wall.emplace();
   visit_state(r, s);
   std::uint64_t n = 0;
   r.value(n);

@@ -7,17 +7,19 @@
 #include <unordered_map>
 #include <vector>
 
+#include "boundary/rough_walls.hpp"
+#include "detection/contact.hpp"
 #include "drivers/shear_cell_builder.hpp"
 #include "measure/contact_statistics.hpp"
 #include "measure/flow_series.hpp"
 #include "measure/velocity_profile.hpp"
-#include "solver/contact.hpp"
 #include "world/world.hpp"
 
 namespace dilatant {
 
 struct ShearCellState {
   World world;
+  RoughWalls walls;  // their contact law is a run setting, not part of the state
   ShearCellGeometry geometry;
   double dt = 0.0;
   std::unordered_map<std::uint64_t, ContactMemory> contact_memory;

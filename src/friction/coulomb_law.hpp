@@ -1,6 +1,7 @@
 #pragma once
 // Amontons–Coulomb friction with a constant coefficient mu0: the paper's
 // "no hydrodynamics" control run.
+#include "friction/sommerfeld.hpp"
 #include "friction/tangential_problem.hpp"
 
 namespace dilatant {
@@ -28,7 +29,8 @@ struct CoulombLaw {
     }
     out.impulse = cone;
     out.sliding_speed = p.free_slip - p.compliance * cone;
-    out.sommerfeld = eta_f * out.sliding_speed * p.reduced_radius * p.dt / p.normal_impulse;
+    out.sommerfeld = sommerfeld_number(
+        sommerfeld_per_speed(eta_f, p.reduced_radius, p.dt, p.normal_impulse), out.sliding_speed);
     out.regime = Regime::BoundaryLubricated;
     return out;
   }

@@ -1,20 +1,29 @@
 #pragma once
-// The local Sommerfeld number of a lubricated contact (SPEC §1; paper p.2):
+// The local Sommerfeld number of a lubricated contact (Fernandez et al. 2013,
+// p. 2; docs/model.md "Sommerfeld number"):
 //
 //     s = eta_f * |v_t| * R_p / N
 //
-// v_t is the sliding speed at the contact point, N the normal force, and R_p the
-// reduced radius 2 r_i r_j / (r_i + r_j): r for two equal spheres, 2r for a sphere
-// on a flat plane (r_j -> infinity).
+// v_t is the sliding speed at the contact point, N the normal force and R_p the
+// reduced radius (geometry/reduced_radius.hpp). Contact Dynamics works with
+// impulses over a step, N = p_n / dt, so
+//
+//     s = k * v_s,    k = eta_f * R_p * dt / p_n,
+//
+// and k, the Sommerfeld number per unit sliding speed, is what a friction law
+// needs: the Stribeck law solves for v_s on the curve mu(k v_s).
 namespace dilatant {
 
-inline double reduced_radius(double r_i, double r_j) { return 2.0 * r_i * r_j / (r_i + r_j); }
-inline double reduced_radius_on_plane(double r) { return 2.0 * r; }
+// k of a contact that carries the normal impulse p_n > 0 over dt. A contact
+// without load (p_n = 0) carries no friction; callers must not ask for its s.
+inline double sommerfeld_per_speed(double eta_f, double reduced_radius, double dt,
+                                   double normal_impulse) {
+  return eta_f * reduced_radius * dt / normal_impulse;
+}
 
-// A contact without load (N = 0) carries no friction; callers must not ask for its s.
-inline double sommerfeld_number(double eta_f, double sliding_speed, double r_p,
-                                double normal_force) {
-  return eta_f * sliding_speed * r_p / normal_force;
+// s of a contact sliding at v_s, given its k (sommerfeld_per_speed).
+inline double sommerfeld_number(double per_speed, double sliding_speed) {
+  return per_speed * sliding_speed;
 }
 
 }  // namespace dilatant

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "friction/sommerfeld.hpp"
+
 namespace dilatant {
 
 namespace {
@@ -27,7 +29,7 @@ double StribeckLaw::hydrodynamic_root(const TangentialProblem& p, double k, doub
   // beyond s_lim mu is the constant cap.
   const double mu_cap = hydrodynamic_mu(s_lim);
   const auto f_and_slope = [&](double v, double& slope) {
-    const double s = k * v;
+    const double s = sommerfeld_number(k, v);
     if (s >= s_lim) {
       slope = 1.0;
       return v + wp * mu_cap - p.free_slip;
@@ -41,7 +43,7 @@ double StribeckLaw::hydrodynamic_root(const TangentialProblem& p, double k, doub
   // slip and one fixed-point step from there is a close start.
   double v = p.slip_hint;
   if (!(v > lo && v < hi)) {
-    const double s_free = k * p.free_slip;
+    const double s_free = sommerfeld_number(k, p.free_slip);
     v = p.free_slip - wp * (s_free < s_lim ? hydrodynamic_mu(s_free) : mu_cap);
   }
   if (!(v > lo && v < hi)) v = 0.5 * (lo + hi);
@@ -70,11 +72,11 @@ TangentialSolution StribeckLaw::solve(const TangentialProblem& p) const {
   }
   const double w = p.compliance;
   const double cone = mu0 * p.normal_impulse;
-  const double k = eta_f * p.reduced_radius * p.dt / p.normal_impulse;  // s = k * v_s
+  const double k = sommerfeld_per_speed(eta_f, p.reduced_radius, p.dt, p.normal_impulse);
   const double v_bl = p.free_slip - w * cone;
   const auto sliding = [&](double v, Regime regime) {
     out.sliding_speed = v;
-    out.sommerfeld = k * v;
+    out.sommerfeld = sommerfeld_number(k, v);
     out.impulse = (p.free_slip - v) / w;
     out.regime = regime;
     return out;
@@ -93,7 +95,7 @@ TangentialSolution StribeckLaw::solve(const TangentialProblem& p) const {
       return out;
     }
     // Branch 2: boundary-lubricated sliding, if self-consistent (s < s_c) or imposed.
-    if (k * v_bl < s_c || p.branch == FrictionBranch::Boundary) {
+    if (sommerfeld_number(k, v_bl) < s_c || p.branch == FrictionBranch::Boundary) {
       return sliding(v_bl, Regime::BoundaryLubricated);
     }
   } else if (p.free_slip <= 0.0 || k <= 0.0) {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "solver/contact.hpp"
+#include "detection/contact.hpp"
 #include "world/bodies.hpp"
 
 namespace dilatant {

@@ -30,7 +30,7 @@
 #include <string>
 #include <vector>
 
-#include "solver/contact.hpp"
+#include "detection/contact.hpp"
 #include "world/world.hpp"
 
 namespace dilatant {

@@ -5,10 +5,15 @@
 //     V = [F(z)] from max(z_lo, z0 - r) to min(z_hi, z0 + r),
 //     F(z) = pi (r^2 (z - z0) - (z - z0)^3 / 3).
 // In the central region it measures phi_bulk, free of the layering at the walls.
+#include <span>
+
+#include "boundary/body_group.hpp"
 #include "world/world.hpp"
 
 namespace dilatant {
 
-double slab_volume_fraction(const World& world, double z_lo, double z_hi);
+// Bodies of a boundary (`group`, as Boundary::body_groups(); empty: none) are left out.
+double slab_volume_fraction(const World& world, std::span<const BodyGroup> group, double z_lo,
+                            double z_hi);
 
 }  // namespace dilatant

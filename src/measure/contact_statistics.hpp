@@ -7,7 +7,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "solver/contact.hpp"
+#include "boundary/body_group.hpp"
+#include "detection/contact.hpp"
 #include "world/world.hpp"
 
 namespace dilatant {
@@ -41,7 +42,7 @@ struct ContactCounts {
 
 // Counts over the particle–particle contacts of one step (dt converts impulses
 // to forces); adds their s values to `histogram` if given.
-ContactCounts count_contacts(const World& world, const std::vector<Contact>& contacts, double dt,
-                             double s_lim, SommerfeldHistogram* histogram);
+ContactCounts count_contacts(std::span<const BodyGroup> group, const std::vector<Contact>& contacts,
+                             double dt, double s_lim, SommerfeldHistogram* histogram);
 
 }  // namespace dilatant

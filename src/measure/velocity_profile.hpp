@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "boundary/body_group.hpp"
 #include "world/world.hpp"
 
 namespace dilatant {
@@ -20,7 +21,7 @@ class VelocityProfile {
   VelocityProfile() = default;
   VelocityProfile(double lz, int bins) : lz_(lz), sum_vx_(bins, 0.0), weight_(bins, 0.0) {}
 
-  void add(const World& world, double weight);
+  void add(const World& world, std::span<const BodyGroup> group, double weight);
   int bins() const { return static_cast<int>(sum_vx_.size()); }
   double bin_centre(int k) const { return (k + 0.5) * lz_ / bins(); }
   double mean_vx(int k) const { return weight_[k] > 0.0 ? sum_vx_[k] / weight_[k] : 0.0; }

@@ -2,7 +2,8 @@
 
 namespace dilatant {
 
-WallForces wall_forces(const World& world, const std::vector<Contact>& contacts, double dt) {
+WallForces wall_forces(std::span<const BodyGroup> group, const std::vector<Contact>& contacts,
+                       double dt) {
   WallForces f;
   auto add = [&](BodyGroup g, const Vec3& force) {
     if (g == BodyGroup::BottomWall) f.bottom += force;
@@ -11,12 +12,12 @@ WallForces wall_forces(const World& world, const std::vector<Contact>& contacts,
   for (const Contact& c : contacts) {
     if (c.p_n <= 0.0) continue;
     const Vec3 on_i = (c.p_n * c.normal + c.p_t) / dt;
-    add(world.group[c.i], on_i);
+    add(group[c.i], on_i);
     if (c.with_plane()) {
       // Safety plane 0 is the bottom wall's, plane 1 the top wall's.
       add(c.plane_index() == 0 ? BodyGroup::BottomWall : BodyGroup::TopWall, -on_i);
     } else {
-      add(world.group[c.other], -on_i);
+      add(group[c.other], -on_i);
     }
   }
   return f;

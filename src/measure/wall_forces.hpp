@@ -2,8 +2,8 @@
 // Forces the contacts exert on the two walls during one step (impulse / dt).
 #include <vector>
 
-#include "solver/contact.hpp"
-#include "world/world.hpp"
+#include "boundary/body_group.hpp"
+#include "detection/contact.hpp"
 
 namespace dilatant {
 
@@ -12,6 +12,8 @@ struct WallForces {
   Vec3 top = Vec3::Zero();     // on the moving wall (its spheres and the z = Lz plane)
 };
 
-WallForces wall_forces(const World& world, const std::vector<Contact>& contacts, double dt);
+// `group` is the walls' Boundary::body_groups().
+WallForces wall_forces(std::span<const BodyGroup> group, const std::vector<Contact>& contacts,
+                       double dt);
 
 }  // namespace dilatant

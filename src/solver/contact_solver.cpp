@@ -110,27 +110,29 @@ SweepChange gauss_seidel_sweep(std::vector<Contact>& contacts, Bodies& bodies,
   return sweep_range(contacts, 0, contacts.size(), bodies, law, dt, 1.0, false);
 }
 
-void WallBlock::update(const std::vector<Contact>& contacts, Bodies& bodies) const {
-  double impulse_x = 0.0;
-  for (const auto& [index, sign] : wall_contacts) {
-    const Contact& c = contacts[index];
-    impulse_x += sign * (c.p_n * c.normal[0] + c.p_t[0]);
-  }
-  wall->velocity = free_velocity + impulse_x / wall->mass;
-  for (std::int32_t s : wall->spheres) bodies.velocity[s] = Vec3(wall->velocity, 0.0, 0.0);
-}
-
 SolveReport solve_contacts(std::vector<Contact>& contacts, Bodies& bodies, const FrictionLaw& law,
                            double dt, const SolverSettings& settings) {
-  return solve_contacts(contacts, SlabPartition::single(contacts.size(), contacts.size()), bodies,
-                        law, law, dt, settings, nullptr);
+  const SlabPartition slabs = SlabPartition::single(contacts.size(), contacts.size());
+  return solve_contacts({.contacts = contacts,
+                         .slabs = slabs,
+                         .bodies = bodies,
+                         .law = law,
+                         .boundary = nullptr,
+                         .dt = dt},
+                        settings);
 }
 
-SolveReport solve_contacts(std::vector<Contact>& contacts, const SlabPartition& slabs,
-                           Bodies& bodies, const FrictionLaw& law, const FrictionLaw& wall_law,
-                           double dt, const SolverSettings& settings, const WallBlock* wall) {
+SolveReport solve_contacts(const ContactProblem& problem, const SolverSettings& settings) {
+  std::vector<Contact>& contacts = problem.contacts;
+  const SlabPartition& slabs = problem.slabs;
+  Bodies& bodies = problem.bodies;
+  const FrictionLaw& law = problem.law;
+  const FrictionLaw& boundary_law =
+      problem.boundary != nullptr ? problem.boundary->contact_law() : law;
+  Boundary* const boundary = problem.boundary;
+  const double dt = problem.dt;
   SolveReport report;
-  if (wall != nullptr) wall->update(contacts, bodies);
+  if (boundary != nullptr) boundary->solve_block(contacts, bodies);
   if (contacts.empty()) return report;
   report.converged = false;
   const double noise_squared = round_off_floor_squared(contacts, bodies);
@@ -141,12 +143,14 @@ SolveReport solve_contacts(std::vector<Contact>& contacts, const SlabPartition& 
   const double omega = settings.relaxation;
   const auto sweep_slab = [&](int k, int sweep, bool freeze) {
     const auto ks = static_cast<std::size_t>(k);
-    SweepChange ch = sweep_range(contacts, slabs.begin[ks], slabs.wall_begin[ks], bodies, law, dt,
-                                 omega, freeze);
-    const SweepChange ch_wall = sweep_range(contacts, slabs.wall_begin[ks], slabs.begin[ks + 1],
-                                            bodies, wall_law, dt, omega, freeze);
+    SweepChange ch = sweep_range(contacts, slabs.begin[ks], slabs.boundary_begin[ks], bodies, law,
+                                 dt, omega, freeze);
+    const SweepChange ch_boundary =
+        sweep_range(contacts, slabs.boundary_begin[ks], slabs.begin[ks + 1], bodies, boundary_law,
+                    dt, omega, freeze);
     partial[static_cast<std::size_t>((sweep & 1) * n + k)] = {
-        ch.change_squared + ch_wall.change_squared, ch.impulse_squared + ch_wall.impulse_squared};
+        ch.change_squared + ch_boundary.change_squared,
+        ch.impulse_squared + ch_boundary.impulse_squared};
   };
   // Residual of a finished sweep: slab sums added in a fixed order, so every
   // thread computes the same value whatever the thread count.
@@ -162,9 +166,9 @@ SolveReport solve_contacts(std::vector<Contact>& contacts, const SlabPartition& 
                                     : (change_squared > 0.0 ? 1.0 : 0.0);
   };
   const int threads = std::max(1, std::min(settings.threads, n / 2));
-  // Two barriers per sweep (the ends of the two `omp for`). The wall block is
-  // updated by one thread while the others start the next even half: only the
-  // last slab, which is odd, touches the top wall's spheres.
+  // Two barriers per sweep (the ends of the two `omp for`). The boundary's block
+  // is solved by one thread while the others start the next even half: only the
+  // last slab, which is odd, touches the shear cell's top wall (boundary.hpp).
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
     for (int sweep = 0; sweep < settings.max_iterations; ++sweep) {
@@ -176,7 +180,7 @@ SolveReport solve_contacts(std::vector<Contact>& contacts, const SlabPartition& 
       const double residual = residual_of(sweep);
 #pragma omp masked
       {
-        if (wall != nullptr) wall->update(contacts, bodies);
+        if (boundary != nullptr) boundary->solve_block(contacts, bodies);
         report.iterations = sweep + 1;
         report.residual = residual;
         report.converged = residual <= settings.tolerance;

@@ -56,20 +56,19 @@
 // contact at s slightly above s_c or vice versa); their number is what the
 // branch rule could not decide anyway.
 //
-// The moving wall (shear cell) is one more block of the Gauss–Seidel iteration:
-// its spheres have infinite mass in the contact problems, and after each sweep
-// its velocity is solved exactly given the contact impulses,
-//     V = V_free + (1/M) sum_c (impulse of contact c on the wall)_x ,
-// then copied to its spheres. Contact sweeps never wait on the wall.
+// A boundary (boundary/boundary.hpp), e.g. the shear cell's moving wall, is one
+// more block of the Gauss–Seidel iteration: its bodies have infinite mass in the
+// contact problems, and after each sweep it solves its own degrees of freedom
+// exactly given the contact impulses. Contact sweeps never wait on it.
 #include <cstdint>
 #include <utility>
 #include <vector>
 
+#include "boundary/boundary.hpp"
+#include "detection/contact.hpp"
 #include "friction/friction_law.hpp"
-#include "solver/contact.hpp"
 #include "solver/slab_partition.hpp"
 #include "world/bodies.hpp"
-#include "world/sliding_wall.hpp"
 
 namespace dilatant {
 
@@ -111,24 +110,22 @@ void apply_impulses(const std::vector<Contact>& contacts, Bodies& bodies);
 SweepChange gauss_seidel_sweep(std::vector<Contact>& contacts, Bodies& bodies,
                                const FrictionLaw& law, double dt);
 
-// The moving wall's block: which contacts touch it, with the sign of their
-// impulse on it (+1 if the wall sphere is body i, -1 if it is the partner).
-struct WallBlock {
-  SlidingWall* wall = nullptr;
-  double free_velocity = 0.0;  // V + dt F / M
-  std::vector<std::pair<std::int32_t, double>> wall_contacts;
-
-  void update(const std::vector<Contact>& contacts, Bodies& bodies) const;
-};
-
 SolveReport solve_contacts(std::vector<Contact>& contacts, Bodies& bodies, const FrictionLaw& law,
                            double dt, const SolverSettings& settings);
 
-// Contacts ordered in red-black slabs (solver/slab_partition.hpp); those touching
-// a wall sphere obey wall_law; `wall` may be null. The impulses do not depend on
-// settings.threads.
-SolveReport solve_contacts(std::vector<Contact>& contacts, const SlabPartition& slabs,
-                           Bodies& bodies, const FrictionLaw& law, const FrictionLaw& wall_law,
-                           double dt, const SolverSettings& settings, const WallBlock* wall);
+// One step's contact problem: the contacts ordered in red-black slabs
+// (solver/slab_partition.hpp), the bodies they act on, the law of contacts
+// between particles, and the boundary, if any, whose contacts obey its own law.
+struct ContactProblem {
+  std::vector<Contact>& contacts;
+  const SlabPartition& slabs;
+  Bodies& bodies;
+  const FrictionLaw& law;
+  Boundary* boundary = nullptr;
+  double dt = 0.0;
+};
+
+// The impulses do not depend on settings.threads.
+SolveReport solve_contacts(const ContactProblem& problem, const SolverSettings& settings);
 
 }  // namespace dilatant

@@ -12,7 +12,7 @@
 // dissipative solve.
 #include <vector>
 
-#include "solver/contact.hpp"
+#include "detection/contact.hpp"
 
 namespace dilatant {
 

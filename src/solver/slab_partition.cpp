@@ -6,10 +6,10 @@
 
 namespace dilatant {
 
-SlabPartition SlabPartition::single(std::size_t contacts, std::size_t wall_begin) {
+SlabPartition SlabPartition::single(std::size_t contacts, std::size_t boundary_begin) {
   SlabPartition p;
   p.begin = {0, contacts};
-  p.wall_begin = {wall_begin};
+  p.boundary_begin = {boundary_begin};
   return p;
 }
 
@@ -17,10 +17,10 @@ namespace {
 
 constexpr int kAxis = 2;  // z
 
-bool touches_wall(const World& world, const Contact& c) {
-  if (world.group.empty()) return false;
-  return world.is_wall(static_cast<std::size_t>(c.i)) ||
-         (!c.with_plane() && world.is_wall(static_cast<std::size_t>(c.other)));
+bool touches_boundary(std::span<const BodyGroup> group, const Contact& c) {
+  if (group.empty()) return false;
+  return is_boundary_body(group, static_cast<std::size_t>(c.i)) ||
+         (!c.with_plane() && is_boundary_body(group, static_cast<std::size_t>(c.other)));
 }
 
 double contact_point(const Contact& c, const Bodies& b) {
@@ -54,6 +54,7 @@ Extent contact_extent(const std::vector<Contact>& contacts, const World& world) 
 }  // namespace
 
 SlabPartition partition_into_slabs(std::vector<Contact>& contacts, const World& world,
+                                   std::span<const BodyGroup> boundary_bodies,
                                    std::vector<Contact>& scratch) {
   int slabs = 1;
   Extent e;
@@ -65,24 +66,24 @@ SlabPartition partition_into_slabs(std::vector<Contact>& contacts, const World& 
     while (2 * slabs <= kMaxSlabs && length / (2 * slabs) >= 2.0 * e.reach) slabs *= 2;
   }
   const double width = slabs > 1 ? (e.high - e.low) / slabs : 1.0;
-  // Counting sort on key = 2 slab + touches_wall: stable, O(contacts).
+  // Counting sort on key = 2 slab + touches_boundary: stable, O(contacts).
   const auto key = [&](const Contact& c) {
     int slab = 0;
     if (slabs > 1) {
       slab =
           std::min(slabs - 1, static_cast<int>((contact_point(c, world.bodies) - e.low) / width));
     }
-    return 2 * slab + (touches_wall(world, c) ? 1 : 0);
+    return 2 * slab + (touches_boundary(boundary_bodies, c) ? 1 : 0);
   };
   std::vector<std::size_t> first(2 * static_cast<std::size_t>(slabs) + 1, 0);
   for (const Contact& c : contacts) ++first[static_cast<std::size_t>(key(c)) + 1];
   for (std::size_t k = 1; k < first.size(); ++k) first[k] += first[k - 1];
   SlabPartition p;
   p.begin.resize(static_cast<std::size_t>(slabs) + 1);
-  p.wall_begin.resize(static_cast<std::size_t>(slabs));
-  for (std::size_t s = 0; s < p.wall_begin.size(); ++s) {
+  p.boundary_begin.resize(static_cast<std::size_t>(slabs));
+  for (std::size_t s = 0; s < p.boundary_begin.size(); ++s) {
     p.begin[s] = first[2 * s];
-    p.wall_begin[s] = first[2 * s + 1];
+    p.boundary_begin[s] = first[2 * s + 1];
   }
   p.begin.back() = contacts.size();
   scratch.resize(contacts.size());

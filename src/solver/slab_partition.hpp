@@ -17,29 +17,33 @@
 // The slab count is 1, 2, 4 or 8 (8 keeps the even and odd halves balanced on
 // 2 and 4 threads), the largest that fits; one slab if z is periodic.
 #include <cstddef>
+#include <span>
 #include <vector>
 
-#include "solver/contact.hpp"
+#include "boundary/body_group.hpp"
+#include "detection/contact.hpp"
 #include "world/world.hpp"
 
 namespace dilatant {
 
 struct SlabPartition {
-  // Slab k holds contacts [begin[k], wall_begin[k]) between particles and
-  // [wall_begin[k], begin[k + 1]) touching a wall sphere (which obey the wall's
-  // friction law). begin has count() + 1 entries.
+  // Slab k holds contacts [begin[k], boundary_begin[k]) between particles and
+  // [boundary_begin[k], begin[k + 1]) touching a body of the boundary (a wall
+  // sphere; they obey the boundary's contact law). begin has count() + 1 entries.
   std::vector<std::size_t> begin{0, 0};
-  std::vector<std::size_t> wall_begin{0};
+  std::vector<std::size_t> boundary_begin{0};
 
-  int count() const { return static_cast<int>(wall_begin.size()); }
-  static SlabPartition single(std::size_t contacts, std::size_t wall_begin);
+  int count() const { return static_cast<int>(boundary_begin.size()); }
+  static SlabPartition single(std::size_t contacts, std::size_t boundary_begin);
 };
 
 inline constexpr int kMaxSlabs = 8;
 
 // Reorders `contacts` by slab (keeping their relative order inside a slab) and
-// returns the ranges; `scratch` is reused storage.
+// returns the ranges; `boundary_bodies` is Boundary::body_groups() (empty: no
+// boundary); `scratch` is reused storage.
 SlabPartition partition_into_slabs(std::vector<Contact>& contacts, const World& world,
+                                   std::span<const BodyGroup> boundary_bodies,
                                    std::vector<Contact>& scratch);
 
 }  // namespace dilatant

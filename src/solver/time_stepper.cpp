@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <span>
 
 namespace dilatant {
 
@@ -32,22 +33,6 @@ void TimeStepper::warm_start(Bodies& bodies) {
   apply_impulses(contacts_, bodies);
 }
 
-WallBlock TimeStepper::make_wall_block(World& world, double free_velocity) const {
-  WallBlock block;
-  block.wall = &*world.sliding_wall;
-  block.free_velocity = free_velocity;
-  if (world.group.empty()) return block;
-  for (std::size_t k = 0; k < contacts_.size(); ++k) {
-    const Contact& c = contacts_[k];
-    const auto index = static_cast<std::int32_t>(k);
-    if (world.group[c.i] == BodyGroup::TopWall) block.wall_contacts.emplace_back(index, 1.0);
-    if (!c.with_plane() && world.group[c.other] == BodyGroup::TopWall) {
-      block.wall_contacts.emplace_back(index, -1.0);
-    }
-  }
-  return block;
-}
-
 double TimeStepper::largest_overlap(const World& world) const {
   double overlap = 0.0;
   const Bodies& b = world.bodies;
@@ -64,7 +49,7 @@ double TimeStepper::largest_overlap(const World& world) const {
   return overlap;
 }
 
-StepReport TimeStepper::step(World& world) {
+StepReport TimeStepper::step(World& world, Boundary* boundary) {
   Bodies& b = world.bodies;
   StepReport report;
 
@@ -75,33 +60,38 @@ StepReport TimeStepper::step(World& world) {
     if (!world.external_force.empty()) a += b.inv_mass[i] * world.external_force[i];
     b.velocity[i] += dt_ * a;
   }
-  double wall_free_velocity = 0.0;
-  if (world.sliding_wall) {
-    SlidingWall& wall = *world.sliding_wall;
-    wall_free_velocity = wall.velocity + dt_ * wall.drive_force / wall.mass;
-    for (std::int32_t s : wall.spheres) b.velocity[s] = Vec3(wall_free_velocity, 0.0, 0.0);
+  if (boundary != nullptr) boundary->predict(b, dt_);
+  if (fluid_ != nullptr) {
+    drag_.clear();
+    fluid_->body_drag(world, drag_);
+    if (!drag_.empty()) implicit_drag_.predict(drag_, dt_, b);
   }
   report.kinetic_energy_free = b.kinetic_energy();
 
-  // 2. detect, 3. warm start, 4. solve
+  // 2. detect, 3. warm start, 4. solve (with the effective masses of the
+  // implicit drag, if any)
   using Clock = std::chrono::steady_clock;
   const auto detection_start = Clock::now();
+  implicit_drag_.use_effective_masses(b);
   detector_.detect(world, detection_margin(world), contacts_, settings_.threads);
-  slabs_ = partition_into_slabs(contacts_, world, scratch_);
+  const std::span<const BodyGroup> boundary_bodies =
+      boundary != nullptr ? boundary->body_groups() : std::span<const BodyGroup>{};
+  slabs_ = partition_into_slabs(contacts_, world, boundary_bodies, scratch_);
   free_velocity_.resize(contacts_.size());
   for (std::size_t k = 0; k < contacts_.size(); ++k) {
     free_velocity_[k] = relative_velocity(contacts_[k], b);
   }
   warm_start(b);
   const auto solve_start = Clock::now();
-  if (world.sliding_wall) {
-    const WallBlock block = make_wall_block(world, wall_free_velocity);
-    report.solve = solve_contacts(contacts_, slabs_, b, law_, wall_law_.value_or(law_), dt_,
-                                  settings_, &block);
-  } else {
-    report.solve = solve_contacts(contacts_, slabs_, b, law_, wall_law_.value_or(law_), dt_,
-                                  settings_, nullptr);
-  }
+  if (boundary != nullptr) boundary->begin_solve(contacts_);
+  report.solve = solve_contacts({.contacts = contacts_,
+                                 .slabs = slabs_,
+                                 .bodies = b,
+                                 .law = law_,
+                                 .boundary = boundary,
+                                 .dt = dt_},
+                                settings_);
+  implicit_drag_.restore_masses(b);
 
   const auto solve_end = Clock::now();
   report.detection_seconds = std::chrono::duration<double>(solve_start - detection_start).count();

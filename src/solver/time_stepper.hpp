@@ -1,21 +1,27 @@
 #pragma once
 // One Contact Dynamics time step (Moreau–Jean, theta = 1), in explicit stages:
 //
-//   1. predict    v_free = v + dt (g + F_ext/m)          (no contacts),
-//                 and the sliding wall's V_free = V + dt F/M
+//   1. predict    v_free = v + dt (g + F_ext/m)          (no contacts);
+//                 the boundary's own free motion (boundary/boundary.hpp);
+//                 the fluid's implicit drag (fluid/fluid_forces.hpp)
 //   2. detect     contacts whose gap may close within the step (cell list)
 //   3. warm start impulses of contacts that existed last step
-//   4. solve      nonlinear Gauss–Seidel until the impulses converge
+//   4. solve      nonlinear Gauss–Seidel until the impulses converge, the
+//                 boundary's block solved after every sweep
 //   5. store      impulses for the next step's warm start
 //   6. integrate  x += dt v   with the end-of-step velocities (implicit)
 //
 // Collisions are perfectly inelastic in the normal direction (zero restitution).
+// The stepper knows no particular cell: a boundary and fluid forces are given
+// to it (both optional; without them it integrates a plain granular world).
 #include <cstdint>
-#include <optional>
 #include <unordered_map>
 #include <vector>
 
+#include "boundary/boundary.hpp"
 #include "detection/contact_detector.hpp"
+#include "fluid/fluid_forces.hpp"
+#include "fluid/implicit_drag.hpp"
 #include "friction/friction_law.hpp"
 #include "solver/contact_solver.hpp"
 #include "solver/contact_work.hpp"
@@ -40,10 +46,12 @@ class TimeStepper {
   TimeStepper(FrictionLaw law, SolverSettings settings, double dt)
       : law_(std::move(law)), settings_(settings), dt_(dt) {}
 
-  StepReport step(World& world);
+  // Advances `world` by one step; `boundary` (may be null) is advanced with it.
+  StepReport step(World& world, Boundary* boundary = nullptr);
 
-  // Contacts touching a wall sphere (World::group) obey this law instead.
-  void set_wall_law(FrictionLaw law) { wall_law_ = std::move(law); }
+  // Velocity-dependent fluid forces, taken implicitly (null: none). Not owned:
+  // it must outlive the stepper's use of it.
+  void set_fluid_forces(const FluidForces* fluid) { fluid_ = fluid; }
   void set_dt(double dt) { dt_ = dt; }
   double dt() const { return dt_; }
   const FrictionLaw& law() const { return law_; }
@@ -62,11 +70,12 @@ class TimeStepper {
  private:
   double detection_margin(const World& world) const;
   void warm_start(Bodies& bodies);
-  WallBlock make_wall_block(World& world, double free_velocity) const;
   double largest_overlap(const World& world) const;
 
   FrictionLaw law_;
-  std::optional<FrictionLaw> wall_law_;
+  const FluidForces* fluid_ = nullptr;
+  BodyDrag drag_;  // of the current step, reused
+  ImplicitDrag implicit_drag_;
   SlabPartition slabs_;
   std::vector<Contact> scratch_;  // reused by partition_into_slabs
   SolverSettings settings_;

@@ -100,11 +100,12 @@ TEST_F(SteadyShear, EnergyBudgetCloses) {
 // The bottom wall is fixed: its spheres end exactly where they were built.
 TEST_F(SteadyShear, FixedWallDoesNotDrift) {
   ShearCellGeometry g;
-  const World built = build_shear_cell(default_cell_config(kCell), g);
+  RoughWalls walls;
+  const World built = build_shear_cell(default_cell_config(kCell), g, walls);
   const ShearCellState end = load_checkpoint(dir_ / "checkpoint.bin");
   int bottom = 0;
   for (std::size_t i = 0; i < built.bodies.size(); ++i) {
-    if (built.group[i] != BodyGroup::BottomWall) continue;
+    if (walls.groups()[i] != BodyGroup::BottomWall) continue;
     EXPECT_EQ(end.world.bodies.position[i], built.bodies.position[i]);
     ++bottom;
   }

@@ -46,7 +46,8 @@ std::filesystem::path fresh_dir(const std::string& name) {
 TEST(ShearCellBuilder, PacksRequestedPhiWithoutOverlapBetweenWalls) {
   const Config config = default_cell_config({"cell.size=[10.0, 6.0, 12.0]", "cell.phi=0.59"});
   ShearCellGeometry g;
-  World world = build_shear_cell(config, g);
+  RoughWalls walls;
+  World world = build_shear_cell(config, g, walls);
   const double lx = 10.0, ly = 6.0, lz = 12.0;
   // phi is realised to within one sphere volume of the request.
   const double one_sphere = 4.0 / 3.0 * std::numbers::pi / (lx * ly * g.gap_height);
@@ -70,20 +71,22 @@ TEST(ShearCellBuilder, PacksRequestedPhiWithoutOverlapBetweenWalls) {
   detector.detect(world, 0.0, contacts);
   for (const Contact& c : contacts) EXPECT_GE(c.gap, -kPackingOverlapTolerance * 0.8);
   // Walls: glued spheres centred on z = 0 and z = Lz; the top one slides.
-  ASSERT_TRUE(world.sliding_wall.has_value());
-  for (std::int32_t s : world.sliding_wall->spheres) {
-    EXPECT_EQ(world.group[s], BodyGroup::TopWall);
+  ASSERT_EQ(walls.groups().size(), world.bodies.size());
+  ASSERT_FALSE(walls.top().spheres.empty());
+  for (std::int32_t s : walls.top().spheres) {
+    EXPECT_EQ(walls.groups()[s], BodyGroup::TopWall);
     EXPECT_DOUBLE_EQ(world.bodies.position[s][2], lz);
     EXPECT_EQ(world.bodies.inv_mass[s], 0.0);
   }
-  EXPECT_DOUBLE_EQ(world.sliding_wall->drive_force, 1.0 * lx * ly);
+  EXPECT_DOUBLE_EQ(walls.top().drive_force, 1.0 * lx * ly);
 }
 
 TEST(ShearCellBuilder, IsReproducibleFromTheSeed) {
   const Config config = default_cell_config({"cell.size=[8.0, 6.0, 9.0]"});
   ShearCellGeometry g1, g2;
-  const World a = build_shear_cell(config, g1);
-  const World b = build_shear_cell(config, g2);
+  RoughWalls w1, w2;
+  const World a = build_shear_cell(config, g1, w1);
+  const World b = build_shear_cell(config, g2, w2);
   ASSERT_EQ(a.bodies.size(), b.bodies.size());
   for (std::size_t i = 0; i < a.bodies.size(); ++i) {
     EXPECT_EQ(a.bodies.position[i], b.bodies.position[i]);
@@ -123,10 +126,11 @@ TEST(ShearCellRun, TwoThreadsGiveTheSameBitsAsOne) {
   const std::string size = "cell.size=[6.0, 5.0, 11.0]";
   {
     ShearCellGeometry geometry;
-    const World world = build_shear_cell(small_cell({size}), geometry);
+    RoughWalls walls;
+    const World world = build_shear_cell(small_cell({size}), geometry, walls);
     std::vector<Contact> contacts, scratch;
     ContactDetector().detect(world, 0.1, contacts);
-    ASSERT_GE(partition_into_slabs(contacts, world, scratch).count(), 4);
+    ASSERT_GE(partition_into_slabs(contacts, world, walls.body_groups(), scratch).count(), 4);
   }
   const auto one = fresh_dir("threads1");
   const auto two = fresh_dir("threads2");

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "solver/contact.hpp"
+#include "detection/contact.hpp"
 #include "world/world.hpp"
 
 namespace dilatant::scenes {

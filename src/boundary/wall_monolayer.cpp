@@ -1,4 +1,4 @@
-#include "drivers/rough_wall.hpp"
+#include "boundary/wall_monolayer.hpp"
 
 #include <cmath>
 

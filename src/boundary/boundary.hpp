@@ -1,0 +1,56 @@
+#pragma once
+// What drives a flow from its edges: the seam between the generic Contact
+// Dynamics step (solver/time_stepper.hpp) and a particular cell.
+//
+// A boundary owns degrees of freedom of its own (the shear cell's top wall: its
+// velocity V along x) and bodies whose motion those degrees of freedom set (the
+// wall's glued spheres, of infinite mass in every contact problem). The step
+// calls it at three fixed points:
+//
+//   predict      stage 1, no contacts: advance the own degrees of freedom under
+//                their drive, V_free = V + dt F / M, and give the boundary's
+//                bodies their free velocities;
+//   begin_solve  after detection and warm start: note which contacts act on it;
+//   solve_block  once before the first Gauss–Seidel sweep and after every sweep:
+//                solve the own degrees of freedom exactly given the contacts'
+//                current impulses (one more block of the nonlinear Gauss–Seidel,
+//                Jean 1999), V = V_free + (1/M) sum_c P_c,x, and copy it to its
+//                bodies. It runs on one thread while others already sweep the
+//                next even slabs (solver/slab_partition.hpp): it may write only
+//                bodies that contacts of even slabs do not touch.
+//
+// Contacts touching a body of the boundary (body_groups()) obey the boundary's
+// own contact law (contact_law()), e.g. the walls' rough-grain Coulomb friction.
+//
+// A Lees–Edwards boundary fits the same seam: its degree of freedom is the
+// strain rate under stress control (predict: the rate's free update from the
+// applied stress; solve_block: the rate given the impulses of the contacts
+// across z), and it has no bodies of its own. It will in addition shift the
+// images across z by the accumulated strain in x and offset their velocity by
+// the boundary speed, which contact detection (detection/) and the relative
+// velocity of a contact must read from it; docs/architecture.md says where.
+#include <span>
+#include <vector>
+
+#include "boundary/body_group.hpp"
+#include "detection/contact.hpp"
+#include "friction/friction_law.hpp"
+#include "world/bodies.hpp"
+
+namespace dilatant {
+
+class Boundary {
+ public:
+  virtual ~Boundary() = default;
+
+  // The group of every body (empty: no body belongs to the boundary).
+  virtual std::span<const BodyGroup> body_groups() const = 0;
+  // The law of contacts that touch a body of the boundary.
+  virtual const FrictionLaw& contact_law() const = 0;
+
+  virtual void predict(Bodies& bodies, double dt) = 0;
+  virtual void begin_solve(const std::vector<Contact>& contacts) = 0;
+  virtual void solve_block(const std::vector<Contact>& contacts, Bodies& bodies) = 0;
+};
+
+}  // namespace dilatant

@@ -1,0 +1,33 @@
+#include "boundary/rough_walls.hpp"
+
+namespace dilatant {
+
+void RoughWalls::predict(Bodies& bodies, double dt) {
+  free_velocity_ = top_.velocity + dt * top_.drive_force / top_.mass;
+  for (std::int32_t s : top_.spheres) bodies.velocity[s] = Vec3(free_velocity_, 0.0, 0.0);
+}
+
+void RoughWalls::begin_solve(const std::vector<Contact>& contacts) {
+  top_contacts_.clear();
+  if (group_.empty()) return;
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const Contact& c = contacts[k];
+    const auto index = static_cast<std::int32_t>(k);
+    if (group_[c.i] == BodyGroup::TopWall) top_contacts_.emplace_back(index, 1.0);
+    if (!c.with_plane() && group_[c.other] == BodyGroup::TopWall) {
+      top_contacts_.emplace_back(index, -1.0);
+    }
+  }
+}
+
+void RoughWalls::solve_block(const std::vector<Contact>& contacts, Bodies& bodies) {
+  double impulse_x = 0.0;
+  for (const auto& [index, sign] : top_contacts_) {
+    const Contact& c = contacts[index];
+    impulse_x += sign * (c.p_n * c.normal[0] + c.p_t[0]);
+  }
+  top_.velocity = free_velocity_ + impulse_x / top_.mass;
+  for (std::int32_t s : top_.spheres) bodies.velocity[s] = Vec3(top_.velocity, 0.0, 0.0);
+}
+
+}  // namespace dilatant

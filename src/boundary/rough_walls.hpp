@@ -1,0 +1,59 @@
+#pragma once
+// The shear cell's two rough walls (docs/model.md "Shear cell"): monolayers of
+// glued spheres at z = 0 and z = Lz. The bottom wall is fixed (its spheres have
+// infinite mass). The top wall is one rigid body that moves along x only (its z
+// is fixed: the cell keeps its volume), driven by a constant force F = tau Lx Ly:
+//
+//     M dV/dt = F + sum_c (force of contact c on a top-wall sphere)_x .
+//
+// Its spheres have infinite mass in the contact problems; V is solved as its
+// own block of the Gauss–Seidel iteration (boundary.hpp) and copied to them.
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "boundary/boundary.hpp"
+
+namespace dilatant {
+
+// The top wall's rigid-body state (what a checkpoint keeps).
+struct SlidingWall {
+  std::vector<std::int32_t> spheres;  // indices into Bodies
+  double mass = 0.0;
+  double drive_force = 0.0;  // along +x
+  double velocity = 0.0;     // along x
+};
+
+class RoughWalls final : public Boundary {
+ public:
+  RoughWalls() = default;
+  RoughWalls(std::vector<BodyGroup> group, SlidingWall top, FrictionLaw law)
+      : group_(std::move(group)), top_(std::move(top)), law_(std::move(law)) {}
+
+  std::span<const BodyGroup> body_groups() const override { return group_; }
+  const FrictionLaw& contact_law() const override { return law_; }
+  void set_contact_law(FrictionLaw law) { law_ = std::move(law); }
+
+  void predict(Bodies& bodies, double dt) override;
+  void begin_solve(const std::vector<Contact>& contacts) override;
+  void solve_block(const std::vector<Contact>& contacts, Bodies& bodies) override;
+
+  const std::vector<BodyGroup>& groups() const { return group_; }
+  std::vector<BodyGroup>& groups() { return group_; }
+  const SlidingWall& top() const { return top_; }
+  SlidingWall& top() { return top_; }
+  // Kinetic energy of the top wall as a rigid body, M V^2 / 2 (its spheres have
+  // infinite mass in Bodies and count nothing there).
+  double kinetic_energy() const { return 0.5 * top_.mass * top_.velocity * top_.velocity; }
+
+ private:
+  std::vector<BodyGroup> group_;
+  SlidingWall top_;
+  FrictionLaw law_ = CoulombLaw{};
+  // Of the current step: V + dt F / M, and the contacts on the top wall with the
+  // sign of their impulse on it (+1 if the wall sphere is body i, -1 if it is the partner).
+  double free_velocity_ = 0.0;
+  std::vector<std::pair<std::int32_t, double>> top_contacts_;
+};
+
+}  // namespace dilatant

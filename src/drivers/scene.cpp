@@ -1,0 +1,84 @@
+#include "drivers/scene.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "dilatant/version.hpp"
+#include "drivers/model_setup.hpp"
+#include "drivers/scene_builder.hpp"
+#include "io/input_error.hpp"
+#include "io/particles_csv.hpp"
+
+namespace dilatant {
+
+void StepStatistics::add(const StepReport& r) {
+  ++steps;
+  if (!r.solve.converged) ++unconverged;
+  iterations_total += r.solve.iterations;
+  iterations_max = std::max(iterations_max, r.solve.iterations);
+  residual_max = std::max(residual_max, r.solve.residual);
+  overlap_max = std::max(overlap_max, r.max_overlap);
+}
+
+namespace {
+
+World scene_world(const Config& config) {
+  return build_scene_world(config, read_particles_csv(config.scene->particles));
+}
+
+double scene_dt(const Config& config, const World& world) {
+  const double dt = config.solver.dt > 0.0 ? config.solver.dt : automatic_time_step(world, config);
+  if (dt > config.scene->trajectory_interval) {
+    throw InputError(
+        fmt::format("{}: scene.trajectory_interval = {} is shorter than solver.dt = {}",
+                    config.source, config.scene->trajectory_interval, dt));
+  }
+  return dt;
+}
+
+}  // namespace
+
+Scene::Scene(Config config)
+    : config_(std::move(config)),
+      world_(scene_world(config_)),
+      stepper_(make_friction_law(config_.friction, config_.fluid.eta_f),
+               make_solver_settings(config_.solver), scene_dt(config_, world_)) {
+  total_steps_ = static_cast<long>(std::ceil(config_.run.time / stepper_.dt() - 1e-9));
+}
+
+const StepReport& Scene::step() {
+  last_ = stepper_.step(world_);
+  statistics_.add(last_);
+  return last_;
+}
+
+nlohmann::json Scene::summary(double wall_time) const {
+  const StepStatistics& s = statistics_;
+  nlohmann::json j;
+  j["version"] = kVersion;
+  j["mode"] = "scene";
+  j["particles"] = world_.bodies.size();
+  j["time"] = world_.time;
+  j["dt"] = stepper_.dt();
+  j["steps"] = s.steps;
+  j["frac_steps_unconverged"] = s.steps > 0 ? double(s.unconverged) / double(s.steps) : 0.0;
+  j["steps_unconverged"] = s.unconverged;
+  j["solver_tolerance"] = config_.solver.tolerance;
+  j["solver_max_iterations"] = config_.solver.max_iterations;
+  j["mean_iterations"] = s.steps > 0 ? double(s.iterations_total) / double(s.steps) : 0.0;
+  j["max_iterations_used"] = s.iterations_max;
+  j["max_residual"] = s.residual_max;
+  j["max_overlap"] = s.overlap_max;
+  j["kinetic_energy"] = world_.bodies.kinetic_energy();
+  long closed = 0;
+  for (const Contact& c : stepper_.contacts()) closed += c.p_n > 0.0 ? 1 : 0;
+  j["contacts"] = closed;
+  j["mu0"] = config_.friction.mu0;
+  j["friction_law"] = config_.friction.law == FrictionLawKind::Coulomb ? "coulomb" : "stribeck";
+  j["wall_time_s"] = wall_time;
+  return j;
+}
+
+}  // namespace dilatant

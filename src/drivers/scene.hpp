@@ -1,0 +1,54 @@
+#pragma once
+// A scene as an object: particles from a CSV file, fixed planes, gravity, a box
+// (docs/model.md; the validation and teaching mode). Build it, step it to
+// run.time, read its state; the CLI's run loop (drivers/scene_run.hpp) writes
+// its files.
+//
+//     Scene scene(config);                 // reads scene.particles, picks dt
+//     while (!scene.done()) scene.step();
+#include <nlohmann/json.hpp>
+
+#include "io/config.hpp"
+#include "solver/time_stepper.hpp"
+
+namespace dilatant {
+
+// Running totals of the per-step solver and energy reports.
+struct StepStatistics {
+  long steps = 0;
+  long unconverged = 0;
+  long iterations_total = 0;
+  int iterations_max = 0;
+  double residual_max = 0.0;
+  double overlap_max = 0.0;
+
+  void add(const StepReport& r);
+};
+
+class Scene {
+ public:
+  // Throws InputError for a bad particles file or a trajectory_interval
+  // shorter than the time step.
+  explicit Scene(Config config);
+
+  const StepReport& step();
+  bool done() const { return statistics_.steps >= total_steps_; }
+
+  const Config& config() const { return config_; }
+  const World& world() const { return world_; }
+  double dt() const { return stepper_.dt(); }
+  const std::vector<Contact>& contacts() const { return stepper_.contacts(); }
+  const StepStatistics& statistics() const { return statistics_; }
+  // summary.json: run totals, solver convergence, version.
+  nlohmann::json summary(double wall_time_s) const;
+
+ private:
+  Config config_;
+  World world_;
+  TimeStepper stepper_;
+  long total_steps_ = 0;
+  StepStatistics statistics_;
+  StepReport last_;
+};
+
+}  // namespace dilatant

@@ -1,0 +1,196 @@
+#include "drivers/shear_cell.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "drivers/model_setup.hpp"
+#include "measure/bulk_fraction.hpp"
+#include "measure/wall_forces.hpp"
+
+namespace dilatant {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+CellUnits units_of(const Config& config) {
+  return make_cell_units(config.cell->shear_stress, config.density, config.cell->radius_max,
+                         config.fluid.lambda);
+}
+
+// Measurements and output schedules at the start of a run.
+void start_measurements(const Config& config, ShearCellState& s) {
+  const double lz = config.cell->size[2];
+  s.profile = VelocityProfile(lz, static_cast<int>(std::ceil(lz)));
+  s.next_row_strain = config.run.output_interval;
+  s.next_checkpoint_strain = config.run.checkpoint_interval;
+  s.next_snapshot_strain = 0.0;
+}
+
+ShearCellState new_state(const Config& config) {
+  ShearCellState s;
+  s.world = build_shear_cell(config, s.geometry, s.walls);
+  start_measurements(config, s);
+  return s;
+}
+
+}  // namespace
+
+ShearCell::ShearCell(Config config) : ShearCell(config, new_state(config)) {}
+
+ShearCell::ShearCell(Config config, ShearCellState state)
+    : config_(std::move(config)),
+      units_(units_of(config_)),
+      state_(std::move(state)),
+      stepper_(make_friction_law(config_.friction, units_.eta_f),
+               make_solver_settings(config_.solver), state_.dt > 0.0 ? state_.dt : 1.0) {
+  // The walls are rough glued grains: Coulomb friction (docs/shear-cell.md).
+  state_.walls.set_contact_law(CoulombLaw{config_.cell->wall_friction, units_.eta_f});
+  stepper_.restore_contact_memory(state_.contact_memory);
+  cost_.threads = make_solver_settings(config_.solver).threads;
+}
+
+ShearCell ShearCell::resumed(Config config, const std::filesystem::path& checkpoint) {
+  ShearCellState state = load_checkpoint(checkpoint);
+  return ShearCell(std::move(config), std::move(state));
+}
+
+ShearCell ShearCell::continued(Config config, const std::filesystem::path& checkpoint) {
+  ShearCellState previous = load_checkpoint(checkpoint);
+  const Vec3& size = config.cell->size;
+  if (previous.world.box.length[0] != size[0] || previous.world.box.length[1] != size[1] ||
+      previous.walls.top().spheres.empty())
+    throw std::runtime_error(fmt::format("{}: not a state of this cell (cell.size = [{}, {}, {}])",
+                                         checkpoint.string(), size[0], size[1], size[2]));
+  ShearCellState s;
+  s.world = std::move(previous.world);
+  s.world.time = 0.0;
+  s.walls = std::move(previous.walls);
+  s.geometry = previous.geometry;
+  s.dt = previous.dt;
+  s.contact_memory = std::move(previous.contact_memory);
+  start_measurements(config, s);
+  return ShearCell(std::move(config), std::move(s));
+}
+
+// Automatic time step (solver.dt = 0): no body may move more than
+// c = solver.max_displacement (default 0.02) times r_min in one step, neither at
+// its current speed nor, from rest, under the wall's drive:
+//     dt = min(c r_min / v_max, sqrt(2 c r_min / a_wall)).
+double ShearCell::choose_dt() const {
+  if (config_.solver.dt > 0.0) return config_.solver.dt;
+  const Bodies& b = state_.world.bodies;
+  double v_max = 0.0, r_min = b.radius[0];
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    v_max = std::max(v_max, b.velocity[i].norm() + b.radius[i] * b.angular_velocity[i].norm());
+    r_min = std::min(r_min, b.radius[i]);
+  }
+  const SlidingWall& wall = state_.walls.top();
+  const double c = config_.solver.max_displacement;
+  const double dt_drive = std::sqrt(2.0 * c * r_min * wall.mass / wall.drive_force);
+  return v_max > 0.0 ? std::min(dt_drive, c * r_min / v_max) : dt_drive;
+}
+
+double ShearCell::total_kinetic_energy() const {
+  return state_.world.bodies.kinetic_energy() + state_.walls.kinetic_energy();
+}
+
+double ShearCell::fraction_done() const {
+  return std::min(1.0, state_.strain / std::max(config_.run.strain, 1e-300));
+}
+
+bool ShearCell::snapshot_due() const {
+  return config_.run.snapshot_interval > 0.0 && state_.strain >= state_.next_snapshot_strain;
+}
+
+const StepReport& ShearCell::step() {
+  ShearCellState& s = state_;
+  const double lz = config_.cell->size[2];
+  s.dt = choose_dt();
+  stepper_.set_dt(s.dt);
+  const SlidingWall& wall = s.walls.top();
+  if (s.interval.steps == 0.0) s.interval.kinetic_start = total_kinetic_energy();
+  // Work of the drive over the prediction, F dt (V + V_free)/2: exactly the
+  // wall's kinetic-energy gain before the contacts act.
+  const double drive_work =
+      wall.drive_force * s.dt * (wall.velocity + 0.5 * s.dt * wall.drive_force / wall.mass);
+  last_ = stepper_.step(s.world, &s.walls);
+  cost_.detection_s += last_.detection_seconds;
+  cost_.solve_s += last_.solve_seconds;
+  cost_.contact_updates += double(last_.solve.iterations) * double(last_.contacts_detected);
+  cost_.steps += 1.0;
+  ++s.steps;
+  s.strain += wall.velocity * s.dt / lz;
+
+  const auto measure_start = std::chrono::steady_clock::now();
+  accumulate(last_);
+  s.interval.work_drive += drive_work;
+  s.interval.kinetic_end = total_kinetic_energy();
+  if (s.strain >= s.next_row_strain) {
+    s.rows.push_back(s.interval.close(s.world.time, s.strain));
+    s.rows.back().phi_bulk =
+        slab_volume_fraction(s.world, s.walls.body_groups(), 0.25 * lz, 0.75 * lz);
+    s.interval = IntervalSums{};
+    s.next_row_strain += config_.run.output_interval;
+  }
+  if (s.world.time - s.jam_window_time >= kJamWindow) {
+    s.jammed = s.strain - s.jam_window_strain < kJamStrain;
+    s.jam_window_time = s.world.time;
+    s.jam_window_strain = s.strain;
+  }
+  cost_.measure_s += seconds_since(measure_start);
+  return last_;
+}
+
+void ShearCell::accumulate(const StepReport& report) {
+  ShearCellState& s = state_;
+  const CellConfig& cell = *config_.cell;
+  const std::vector<Contact>& contacts = stepper_.contacts();
+  const double dt = s.dt, area = cell.size[0] * cell.size[1];
+  const bool steady = s.strain > config_.run.transient_strain;
+  const ContactCounts n = count_contacts(s.walls.body_groups(), contacts, dt,
+                                         config_.friction.s_lim, steady ? &s.histogram : nullptr);
+  const WallForces f = wall_forces(s.walls.body_groups(), contacts, dt);
+  IntervalSums& a = s.interval;
+  a.time += dt;
+  a.velocity += s.walls.top().velocity * dt;
+  a.kinetic_energy += report.kinetic_energy * dt;
+  a.contacts += double(report.contacts_closed) * dt;
+  // Contact fractions are time averages: with the adaptive step, a plain count
+  // per step would over-weight the fast (short-step) phases of the flow.
+  a.closed += n.closed * dt;
+  a.boundary += n.boundary * dt;
+  a.over_s_lim += n.over_s_lim * dt;
+  a.impulsive += n.impulsive * dt;
+  a.impulsive_boundary += n.impulsive_boundary * dt;
+  a.normal_stress += 0.5 * (f.top[2] - f.bottom[2]) / area * dt;
+  a.bottom_force_x += f.bottom[0] * dt;
+  a.top_force_z += f.top[2] * dt;
+  a.bottom_force_z += f.bottom[2] * dt;
+  a.sliding_bl += n.sliding_power_bl * dt;
+  a.sliding_hd += n.sliding_power_hd * dt;
+  a.work_normal += report.contact_work.normal;
+  a.work_bl += report.contact_work.tangential_bl;
+  a.work_hd += report.contact_work.tangential_hd;
+  a.iterations += report.solve.iterations;
+  a.max_residual = std::max(a.max_residual, report.solve.residual);
+  a.steps += 1.0;
+  a.unconverged += report.solve.converged ? 0.0 : 1.0;
+  a.max_overlap = std::max(a.max_overlap, report.max_overlap);
+  if (steady) s.profile.add(s.world, s.walls.body_groups(), dt);
+}
+
+void ShearCell::finish() {
+  if (state_.interval.steps > 0) {
+    state_.rows.push_back(state_.interval.close(state_.world.time, state_.strain));
+    state_.interval = IntervalSums{};
+  }
+}
+
+}  // namespace dilatant

@@ -1,0 +1,87 @@
+#pragma once
+// The paper's shear cell as an object (docs/model.md "Shear cell"): build it,
+// step it, read its state and measurements, write its outputs. The CLI's run
+// loop (drivers/shear_cell_run.hpp), the sweeps and the tests all drive this
+// one object; it is what a script holds while a cell runs.
+//
+//     ShearCell cell(config);                 // walls + packing from cell.seed
+//     while (!cell.done()) cell.step();       // to run.strain, or until it jams
+//     cell.finish();                          // close the last time-series row
+//     cell.write_results(out, cost);          // summary.json, profiles, contacts ...
+//
+// Units: code units R = rho_p = tau = 1 inside (measure/cell_units.hpp); the
+// summary reports the paper's units.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "drivers/shear_cell_state.hpp"
+#include "io/config.hpp"
+#include "measure/cell_units.hpp"
+#include "measure/run_cost.hpp"
+#include "solver/time_stepper.hpp"
+
+namespace dilatant {
+
+class ShearCell {
+ public:
+  // A new cell: rough walls and a packing at cell.phi, reproducibly from cell.seed.
+  explicit ShearCell(Config config);
+  // Exactly where an interrupted run of this config stopped (its checkpoint).
+  static ShearCell resumed(Config config, const std::filesystem::path& checkpoint);
+  // Continuation along a flow curve (a rheometer's ramp): the final state of
+  // another run of the same cell (particles, walls, velocities, contact
+  // impulses); strain, time and every measurement start at zero, and the
+  // friction law and drive are this config's. Throws if the cell differs.
+  static ShearCell continued(Config config, const std::filesystem::path& checkpoint);
+
+  // One time step and its measurements.
+  const StepReport& step();
+  // run.strain reached, or jammed: the wall advanced less than kJamStrain
+  // within kJamWindow time units (code units R sqrt(rho_p/tau); a Newtonian
+  // flow at lambda = 0.01 still shears ~1e-2 in that time).
+  bool done() const { return state_.strain >= config_.run.strain || state_.jammed; }
+  double fraction_done() const;
+  // Closes the time series' last, partial interval (at the end of a run).
+  void finish();
+
+  // Output schedules (in strain), met by the caller's run loop.
+  bool snapshot_due() const;
+  bool checkpoint_due() const { return state_.strain >= state_.next_checkpoint_strain; }
+
+  // Writers: every file atomically (write, then rename).
+  void write_checkpoint(const std::filesystem::path& file);       // and moves its schedule on
+  void write_snapshot(const std::filesystem::path& out_dir);      // snapshots/*.vtp + cell.pvd
+  void write_series(const std::filesystem::path& out_dir) const;  // timeseries.csv
+  // The end-of-run files: timeseries.csv, velocity_profile.csv,
+  // sommerfeld_hist.csv, contacts.csv, summary.json.
+  void write_results(const std::filesystem::path& out_dir, const RunCost& cost) const;
+
+  // The progress line of a terminal: strain, shear rate, viscosity, time left.
+  std::string progress_line(double elapsed_seconds) const;
+
+  const Config& config() const { return config_; }
+  const ShearCellState& state() const { return state_; }
+  const CellUnits& units() const { return units_; }
+  const std::vector<Contact>& contacts() const { return stepper_.contacts(); }
+  // Time spent so far in detection, solve and measurement, and the work done.
+  const RunCost& cost() const { return cost_; }
+
+  static constexpr double kJamWindow = 50.0;
+  static constexpr double kJamStrain = 1e-4;
+
+ private:
+  ShearCell(Config config, ShearCellState state);
+  double choose_dt() const;
+  double total_kinetic_energy() const;
+  void accumulate(const StepReport& report);
+
+  Config config_;
+  CellUnits units_;
+  ShearCellState state_;
+  TimeStepper stepper_;
+  StepReport last_;
+  RunCost cost_;
+};
+
+}  // namespace dilatant

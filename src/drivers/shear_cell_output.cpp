@@ -1,0 +1,73 @@
+// The shear cell's output files (docs/shear-cell.md "Output"), each written
+// atomically: the checkpoint, ParaView snapshots, the time series and the
+// end-of-run results.
+#include <fmt/format.h>
+
+#include "drivers/shear_cell.hpp"
+#include "drivers/shear_cell_summary.hpp"
+#include "io/atomic_file.hpp"
+#include "io/contacts_csv.hpp"
+#include "io/vtk_writer.hpp"
+#include "measure/rheology.hpp"
+
+namespace dilatant {
+
+void ShearCell::write_checkpoint(const std::filesystem::path& file) {
+  state_.contact_memory = stepper_.contact_memory();
+  save_checkpoint(file, state_);
+  while (state_.next_checkpoint_strain <= state_.strain)
+    state_.next_checkpoint_strain += config_.run.checkpoint_interval;
+}
+
+void ShearCell::write_snapshot(const std::filesystem::path& out) {
+  ShearCellState& s = state_;
+  const auto k = s.snapshot_strains.size();
+  std::filesystem::create_directories(out / "snapshots");
+  const auto particles = fmt::format("snapshots/particles_{:04d}.vtp", k);
+  const auto network = fmt::format("snapshots/contacts_{:04d}.vtp", k);
+  std::vector<std::uint8_t> groups;
+  for (BodyGroup g : s.walls.groups()) groups.push_back(static_cast<std::uint8_t>(g));
+  write_particles_vtp(out / particles, s.world, groups);
+  write_contacts_vtp(out / network, s.world, stepper_.contacts(), s.dt);
+  s.snapshot_strains.push_back(s.strain);
+  // The collection's "timestep" is the strain at the snapshot.
+  PvdCollection pvd(out / "cell.pvd");
+  for (std::size_t n = 0; n < s.snapshot_strains.size(); ++n) {
+    pvd.add(s.snapshot_strains[n], fmt::format("snapshots/particles_{:04d}.vtp", n), 0);
+    pvd.add(s.snapshot_strains[n], fmt::format("snapshots/contacts_{:04d}.vtp", n), 1);
+  }
+  pvd.write();
+  s.next_snapshot_strain += config_.run.snapshot_interval;
+}
+
+void ShearCell::write_series(const std::filesystem::path& out) const {
+  std::string csv = flow_csv_header();
+  for (const FlowRow& r : state_.rows) csv += flow_csv_row(r, config_.cell->size[2]);
+  write_file_atomically(out / "timeseries.csv", csv);
+}
+
+void ShearCell::write_results(const std::filesystem::path& out, const RunCost& cost) const {
+  write_series(out);
+  write_file_atomically(out / "velocity_profile.csv", state_.profile.csv());
+  write_file_atomically(out / "sommerfeld_hist.csv", sommerfeld_histogram_csv(state_.histogram));
+  write_file_atomically(out / "contacts.csv",
+                        contacts_csv(state_.world.bodies, stepper_.contacts(), state_.dt));
+  write_file_atomically(out / "summary.json",
+                        cell_summary(config_, units_, state_, cost).dump(2) + "\n");
+}
+
+std::string ShearCell::progress_line(double elapsed) const {
+  const ShearCellState& s = state_;
+  // The wall speed over the current output interval, else the last row's.
+  const double v = s.interval.time > 0.0 ? s.interval.velocity / s.interval.time
+                   : s.rows.empty()      ? s.walls.top().velocity
+                                         : s.rows.back().wall_velocity;
+  const double gdot = shear_rate(v, config_.cell->size[2]);
+  const double done = s.strain / config_.run.strain;
+  const double left = done > 0.0 ? elapsed * (1.0 - done) / done : 0.0;
+  return fmt::format("strain {:6.2f}/{:.2f}  gamma_dot {:9.3g}  eta {:9.3g}  left {:5.0f} s ",
+                     s.strain, config_.run.strain, gdot / units_.rate_unit,
+                     relative_viscosity(config_.cell->shear_stress, gdot, units_.eta_f), left);
+}
+
+}  // namespace dilatant
