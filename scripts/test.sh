@@ -44,6 +44,8 @@ format_check() {
     xargs -0 --no-run-if-empty clang-format --dry-run --Werror
 }
 stage "clang-format" format_check || true
+# Every folder of src/ includes only lower layers (docs/architecture.md).
+stage "layers" python3 scripts/check-layers.py src || true
 
 if ((${#failed[@]} > 0)); then
   printf '=== test.sh: FAILED: %s\n' "$(IFS=,; echo "${failed[*]}")" >&2

@@ -1,5 +1,5 @@
 #pragma once
-// The whole rheometer analysis (SPEC "Rheometer analysis", paper Fig. 3):
+// The whole rheometer analysis (docs/analysis.md, paper Fig. 3):
 //   1. each flow curve: plateau, onset, n with its interval, regime (curve_analysis.hpp);
 //   2. each sample: n(phi) of its CST curves fitted with n - 1 = A x^-alpha,
 //      phi_max given or fitted (divergence_fit.hpp); when phi_max is given, a

@@ -1,5 +1,5 @@
 // dilatant: the command-line front end. A thin layer: it parses arguments with
-// CLI11 and calls the library; it owns the exit codes (SPEC §2):
+// CLI11 and calls the library; it owns the exit codes (README "Using it"):
 //   0 success, 2 bad input (one line naming file, key and problem), 1 other failure.
 #include <CLI/CLI.hpp>
 #include <exception>

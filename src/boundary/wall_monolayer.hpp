@@ -1,6 +1,6 @@
 #pragma once
 // A rough wall of the shear cell: a random, non-overlapping monolayer of glued
-// spheres with centres on one plane z = z0 (SPEC §1 "Shear cell").
+// spheres with centres on one plane z = z0 (docs/model.md "The shear cell").
 //
 // Centres are placed by random sequential adsorption of their discs in the
 // periodic Lx x Ly rectangle, continued until `kSaturationAttempts` attempts in

@@ -1,5 +1,5 @@
 #pragma once
-// Scene mode (SPEC §2): a world built from a particle CSV, planes, gravity and a
+// Scene mode (README "Scene configuration"): a world built from a particle CSV, planes, gravity and a
 // possibly periodic box — for validation and teaching set-ups.
 #include <vector>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The paper's shear cell (SPEC §1): mobile spheres between a fixed rough bottom
+// The paper's shear cell (docs/model.md "The shear cell"; Fernandez et al. 2013, p. 2): mobile spheres between a fixed rough bottom
 // wall and a rough top wall that slides along x under a constant force, periodic
 // in x and y, at constant volume.
 //

@@ -6,7 +6,7 @@
 //     mu(s) = mu(s_lim)                  s >= s_lim          outside lubrication theory
 //
 // Because mu depends on the sliding speed, one contact's local problem can have
-// several consistent answers. We resolve it deterministically (SPEC §1):
+// several consistent answers. We resolve it deterministically (docs/model.md "Friction"):
 //   1. stick, if the sticking impulse |u_t_free|/w_t lies in the mu0 cone;
 //   2. else slide with mu0, if the resulting speed gives s < s_c;
 //   3. else slide on the HD branch: find v_s > 0 with

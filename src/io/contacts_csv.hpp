@@ -1,5 +1,5 @@
 #pragma once
-// contacts.csv (SPEC §2): the contacts that carry load at the end of a run,
+// contacts.csv (README "Using it"): the contacts that carry load at the end of a run,
 //   i,j,normal_force,tangential_force,sliding_speed,sommerfeld,regime
 // i and j are the particles' ids; j = -(k+1) for a contact with plane k.
 // Forces are impulses over the last step divided by dt.

@@ -4,7 +4,7 @@
 // known), the key or column, and what is wrong, e.g.
 //     scene.toml:7: friction.mu0 = -0.1: must be >= 0
 //     particles.csv:4: column 'r': 'abc' is not a number
-// so the CLI can print it as is and exit with code 2 (SPEC §2). Anything else
+// so the CLI can print it as is and exit with code 2 (README "Using it"). Anything else
 // thrown by the library is a failure of the program, not of the input (exit 1).
 #include <stdexcept>
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// Particles of a scene, read from CSV (SPEC §2, scene mode).
+// Particles of a scene, read from CSV (README "Scene configuration").
 //
 // One header row naming the columns, in any order:
 //   id,x,y,z,r                required: integer id, centre, radius (> 0)

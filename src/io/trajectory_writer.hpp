@@ -1,5 +1,5 @@
 #pragma once
-// trajectory.csv (SPEC §2): one row per particle per output time,
+// trajectory.csv (README "Using it"): one row per particle per output time,
 //   t,id,x,y,z,vx,vy,vz,wx,wy,wz
 #include <filesystem>
 

@@ -33,7 +33,7 @@ struct ContactCounts {
   double boundary = 0.0;  // stick or BL
   double over_s_lim = 0.0;
   // Impulsive contacts: closed now, not in the previous step (a collision within
-  // the step). Their N = p_n/dt, hence s, depends on dt (SPEC §1).
+  // the step). Their N = p_n/dt, hence s, depends on dt (docs/model.md "Friction").
   double impulsive = 0.0;
   double impulsive_boundary = 0.0;
   double sliding_power_bl = 0.0;  // sum of |F_t| v_s over BL contacts

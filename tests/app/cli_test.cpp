@@ -1,4 +1,4 @@
-// End-to-end tests of the `dilatant` executable (SPEC §2): a real process is run
+// End-to-end tests of the `dilatant` executable (README "Using it"): a real process is run
 // on files written to a private temporary directory, and its exit code, stderr
 // and output folder are checked. Exit codes: 0 success, 2 bad input with exactly
 // one line on stderr naming the culprit, 1 any other failure.

@@ -1,4 +1,4 @@
-// The viscous side of the flow curve (SPEC "What the paper shows": a Newtonian
+// The viscous side of the flow curve (paper p. 1 and Fig. 2: a Newtonian
 // viscosity at low shear rate, independent of mu0). At lambda = 0.3 almost all
 // sliding contacts are hydrodynamically lubricated, so the boundary friction
 // mu0 should not matter: eta at mu0 = 0.1 and 0.4 must agree within 3 combined

@@ -1,4 +1,4 @@
-// The Stribeck law (SPEC §1, paper Eq. 1): mu(s) on each branch, and each
+// The Stribeck law (docs/model.md "Friction", paper Eq. 1): mu(s) on each branch, and each
 // branch of the local tangential problem, StribeckLaw::solve.
 //
 // Reference values of mu_HD(s) = 2 pi s ln(5 / (6 pi s)) were computed
@@ -40,7 +40,7 @@ TEST(StribeckMu, HydrodynamicFromScToSlim) {
 
 TEST(StribeckMu, CappedBeyondSlim) {
   const StribeckLaw l = law(1.0);
-  const double cap = 0.6129458698542728;  // mu_HD(0.1); SPEC: "mu(s_lim) = 0.61"
+  const double cap = 0.6129458698542728;  // mu_HD(0.1), the cap of docs/model.md "Friction"
   EXPECT_NEAR(l.mu(0.1), cap, 8 * kEps * cap);
   EXPECT_EQ(l.mu(0.2), l.mu(0.1));
   EXPECT_EQ(l.mu(10.0), l.mu(0.1));
@@ -142,7 +142,7 @@ TEST(StribeckSolve, PrefersBoundaryBranchWhenBothAreConsistent) {
   // With eta_f = 2e-3 (k = 4e-3, v_c = s_c / k = 0.0125) and free slip 0.022:
   // BL gives v = 0.0115 < v_c, consistent. HD is consistent too: f(v_c) =
   // 0.0125 + 0.035 mu_HD(s_c) - 0.022 < 0 and f(free) > 0, so an HD root with
-  // s >= s_c exists. The rule (SPEC §1) takes BL.
+  // s >= s_c exists. The rule (docs/model.md "Friction") takes BL.
   const StribeckLaw l = law(2e-3);
   const TangentialProblem p = problem(0.022);
   const double v_c = l.s_c / 4e-3;
