@@ -162,8 +162,10 @@ void bring_to_rest(Bodies& b) {
 
 // Lowers the ceiling to kLz (see the top of the file); returns the steps taken.
 int compress(World& world, double& overlap) {
-  TimeStepper compression(CoulombLaw{0.0}, SolverSettings{1e-3, 300}, kDt);
-  TimeStepper relaxation(CoulombLaw{0.0}, SolverSettings{1e-6, 1000}, kDt);
+  TimeStepper compression(CoulombLaw{0.0}, SolverSettings{.tolerance = 1e-3, .max_iterations = 300},
+                          kDt);
+  TimeStepper relaxation(CoulombLaw{0.0}, SolverSettings{.tolerance = 1e-6, .max_iterations = 1000},
+                         kDt);
   Bodies& b = world.bodies;
   Plane& ceiling = world.planes.at(1);
   const double h0 = ceiling.point.z();
@@ -191,7 +193,8 @@ int compress(World& world, double& overlap) {
 
 // One step of `law` from `world` (copied), solved to 1e-6 or max_iterations.
 Case shear_step(World world, FrictionLaw law, int max_iterations) {
-  TimeStepper stepper(law, SolverSettings{1e-6, max_iterations}, kDt);
+  TimeStepper stepper(law, SolverSettings{.tolerance = 1e-6, .max_iterations = max_iterations},
+                      kDt);
   const StepReport report = stepper.step(world);
   return Case{std::move(law), std::move(world.bodies), stepper.contacts(), report.solve};
 }

@@ -7,8 +7,9 @@ Every file must be byte-identical, except
   * summary.json: compared key by key, every value exactly, but the keys that
     measure the run's cost (wall time, time by stage, ns per contact update,
     memory) and the version;
-  * config.toml: differences are shown, and count only with --strict-config
-    (a refactor may change how the resolved configuration is presented);
+  * config.toml and a sweep's sweep.toml (resolved configurations): their
+    differing lines are shown, and count only with --strict-config (a refactor
+    may change how the resolved configuration is presented);
   * plots (*.png, *.pdf, *.svg): not compared (matplotlib output);
   * the two folders' own paths, where a file names them, are taken as equal.
 A file that differs only in numbers, each by at most 1e-14 relative (the last
@@ -18,6 +19,7 @@ Prints one line per difference. Exit status: 0 identical (or round-off only
 with --accept-roundoff), 3 round-off only, 1 anything else differs, 2 usage.
 """
 import re
+import difflib
 import json
 import pathlib
 import sys
@@ -28,6 +30,7 @@ COST_KEYS = {
     "version",
 }
 SKIPPED_SUFFIXES = {".png", ".pdf", ".svg"}
+RESOLVED_CONFIGS = {"config.toml", "sweep.toml"}
 
 
 def first_difference(a: bytes, b: bytes) -> str:
@@ -107,6 +110,16 @@ def main() -> int:
             print(f"  {name}: only in {'old' if a.exists() else 'new'}")
             counted += 1
             continue
+        if name.name in RESOLVED_CONFIGS:
+            old_lines = a.read_text().replace(str(old_dir), "<DIR>").splitlines()
+            new_lines = b.read_text().replace(str(new_dir), "<DIR>").splitlines()
+            changed = [line for line in difflib.unified_diff(old_lines, new_lines, lineterm="", n=0)
+                       if line[:1] in "+-" and line[:3] not in ("+++", "---")]
+            for line in changed[:12]:
+                print(f"  {name}: {line}{'' if strict_config else '  (shown, not counted)'}")
+            if changed and strict_config:
+                counted += 1
+            continue
         if name.name == "summary.json":
             diffs = compare_summary(a, b)
         elif name.name == "flowcurves.csv":
@@ -124,11 +137,9 @@ def main() -> int:
                     continue
         if not diffs:
             continue
-        informational = name.name == "config.toml" and not strict_config
         for d in diffs[:5]:
-            print(f"  {name}: {d}{'  (config: shown, not counted)' if informational else ''}")
-        if not informational:
-            counted += 1
+            print(f"  {name}: {d}")
+        counted += 1
     print(f"  {compared} files compared, {counted} differ"
           f"{f', {rounded} in round-off only' if rounded else ''}")
     if counted:

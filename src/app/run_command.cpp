@@ -10,6 +10,7 @@
 #include "drivers/scene_run.hpp"
 #include "drivers/shear_cell_run.hpp"
 #include "io/config.hpp"
+#include "io/config_keys.hpp"
 
 namespace dilatant {
 
@@ -27,6 +28,8 @@ CLI::App* add_run_command(CLI::App& app, RunCommandArgs& args) {
                   "'cell.size=[10.0, 6.0, 12.0]', friction.law=coulomb (repeatable)")
       ->allow_extra_args(false);
   run->add_flag("-q,--quiet", args.quiet, "No progress or final messages");
+  // Every configuration key, its default, range and unit, from the one table of keys.
+  run->footer(config_keys_help());
   run->add_flag("--resume", args.resume,
                 "Shear cell: continue from OUT/checkpoint.bin (same config) instead of starting "
                 "anew; the result is identical to an uninterrupted run");
@@ -81,7 +84,7 @@ int execute_run_command(const RunCommandArgs& args) {
                 (args.config.empty() ? std::string("default")
                                      : std::filesystem::path(args.config).stem().string())
           : std::filesystem::path(args.out);
-  if (config.cell) return run_cell(config, options, args.resume);
+  if (config.cell()) return run_cell(config, options, args.resume);
   const SceneOutcome outcome = run_scene(config, options);
   warn_if_unconverged(config, outcome.steps, outcome.unconverged_steps);
   if (!args.quiet) {

@@ -8,17 +8,20 @@ namespace dilatant {
 FrictionLaw make_friction_law(const FrictionConfig& f, double eta_f) {
   switch (f.law) {
     case FrictionLawKind::Coulomb:
-      return CoulombLaw{f.mu0, eta_f};
+      return CoulombLaw{.mu0 = f.mu0, .eta_f = eta_f};
     case FrictionLawKind::Stribeck:
-      return StribeckLaw{f.mu0, f.s_c, f.s_lim, eta_f};
+      return StribeckLaw{.mu0 = f.mu0, .s_c = f.s_c, .s_lim = f.s_lim, .eta_f = eta_f};
   }
-  return CoulombLaw{f.mu0, eta_f};
+  return CoulombLaw{.mu0 = f.mu0, .eta_f = eta_f};
 }
 
 SolverSettings make_solver_settings(const SolverConfig& s) {
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  return SolverSettings{s.tolerance, s.max_iterations, s.freeze_branches_after,
-                        s.threads > 0 ? s.threads : cores, s.relaxation};
+  return SolverSettings{.tolerance = s.tolerance,
+                        .max_iterations = s.max_iterations,
+                        .freeze_branches_after = s.freeze_branches_after,
+                        .threads = s.threads > 0 ? s.threads : cores,
+                        .relaxation = s.relaxation};
 }
 
 }  // namespace dilatant

@@ -51,7 +51,9 @@ GrowthReport grow_to_full_size(World& world, std::size_t first, double initial_s
   world.gravity = Vec3::Zero();
   const double time = world.time;
   const CoulombLaw frictionless{.mu0 = 0.0, .eta_f = 0.0};
-  TimeStepper projector(frictionless, SolverSettings{.tolerance = 1e-4, .max_iterations = 500},
+  // Plain Gauss–Seidel (no over-relaxation): a projection, not a flow.
+  TimeStepper projector(frictionless,
+                        SolverSettings{.tolerance = 1e-4, .max_iterations = 500, .relaxation = 1.0},
                         1.0);
   FixedWalls walls(group, frictionless);
 

@@ -25,15 +25,15 @@ void StepStatistics::add(const StepReport& r) {
 namespace {
 
 World scene_world(const Config& config) {
-  return build_scene_world(config, read_particles_csv(config.scene->particles));
+  return build_scene_world(config, read_particles_csv(config.scene()->particles));
 }
 
 double scene_dt(const Config& config, const World& world) {
   const double dt = config.solver.dt > 0.0 ? config.solver.dt : automatic_time_step(world, config);
-  if (dt > config.scene->trajectory_interval) {
+  if (dt > config.scene()->trajectory_interval) {
     throw InputError(
         fmt::format("{}: scene.trajectory_interval = {} is shorter than solver.dt = {}",
-                    config.source, config.scene->trajectory_interval, dt));
+                    config.source, config.scene()->trajectory_interval, dt));
   }
   return dt;
 }

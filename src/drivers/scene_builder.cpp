@@ -14,7 +14,7 @@ namespace dilatant {
 namespace {
 
 void check_particles(const Config& config, const std::vector<ParticleRecord>& particles) {
-  const auto file = config.scene->particles.filename().string();
+  const auto file = config.scene()->particles.filename().string();
   for (const ParticleRecord& p : particles) {
     if (p.id < 0) {
       throw InputError(
@@ -32,7 +32,7 @@ void check_particles(const Config& config, const std::vector<ParticleRecord>& pa
 }
 
 void check_box(const Config& config, const Bodies& b) {
-  const SceneConfig& scene = *config.scene;
+  const SceneConfig& scene = *config.scene();
   double r_max = 0.0;
   for (double r : b.radius) r_max = std::max(r_max, r);
   for (int k = 0; k < 3; ++k) {
@@ -52,7 +52,7 @@ void check_overlaps(const Config& config, const World& world) {
   std::vector<Contact> contacts;
   ContactDetector detector;
   detector.detect(world, 0.0, contacts);
-  const auto file = config.scene->particles.filename().string();
+  const auto file = config.scene()->particles.filename().string();
   for (const Contact& c : contacts) {
     if (c.gap >= -tolerance) continue;
     if (c.with_plane()) {
@@ -71,7 +71,7 @@ void check_overlaps(const Config& config, const World& world) {
 }  // namespace
 
 World build_scene_world(const Config& config, const std::vector<ParticleRecord>& particles) {
-  const SceneConfig& scene = *config.scene;
+  const SceneConfig& scene = *config.scene();
   check_particles(config, particles);
   World world;
   world.gravity = scene.gravity;
@@ -106,7 +106,7 @@ double automatic_time_step(const World& world, const Config& config) {
                     "velocities to set a time scale; give solver.dt",
                     config.source));
   }
-  return std::min(0.01 * t, config.scene->trajectory_interval);
+  return std::min(0.01 * t, config.scene()->trajectory_interval);
 }
 
 }  // namespace dilatant

@@ -1,6 +1,6 @@
 #pragma once
-// Scene mode (README "Scene configuration"): a world built from a particle CSV, planes, gravity and a
-// possibly periodic box — for validation and teaching set-ups.
+// Scene mode (README "Scene configuration"): a world built from a particle CSV, planes, gravity and
+// a possibly periodic box — for validation and teaching set-ups.
 #include <vector>
 
 #include "io/config.hpp"

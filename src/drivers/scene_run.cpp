@@ -16,7 +16,7 @@ SceneOutcome run_scene(const Config& config, const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   Scene scene(config);
   const double dt = scene.dt();
-  const double frame_interval = config.scene->trajectory_interval;
+  const double frame_interval = config.scene()->trajectory_interval;
 
   std::filesystem::create_directories(options.out_dir);
   write_file_atomically(options.out_dir / "config.toml", resolved_toml(config));

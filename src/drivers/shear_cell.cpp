@@ -20,13 +20,13 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 CellUnits units_of(const Config& config) {
-  return make_cell_units(config.cell->shear_stress, config.density, config.cell->radius_max,
+  return make_cell_units(config.cell()->shear_stress, config.density, config.cell()->radius_max,
                          config.fluid.lambda);
 }
 
 // Measurements and output schedules at the start of a run.
 void start_measurements(const Config& config, ShearCellState& s) {
-  const double lz = config.cell->size[2];
+  const double lz = config.cell()->size[2];
   s.profile = VelocityProfile(lz, static_cast<int>(std::ceil(lz)));
   s.next_row_strain = config.run.output_interval;
   s.next_checkpoint_strain = config.run.checkpoint_interval;
@@ -51,7 +51,7 @@ ShearCell::ShearCell(Config config, ShearCellState state)
       stepper_(make_friction_law(config_.friction, units_.eta_f),
                make_solver_settings(config_.solver), state_.dt > 0.0 ? state_.dt : 1.0) {
   // The walls are rough glued grains: Coulomb friction (docs/shear-cell.md).
-  state_.walls.set_contact_law(CoulombLaw{config_.cell->wall_friction, units_.eta_f});
+  state_.walls.set_contact_law(CoulombLaw{config_.cell()->wall_friction, units_.eta_f});
   stepper_.restore_contact_memory(state_.contact_memory);
   cost_.threads = make_solver_settings(config_.solver).threads;
 }
@@ -63,7 +63,7 @@ ShearCell ShearCell::resumed(Config config, const std::filesystem::path& checkpo
 
 ShearCell ShearCell::continued(Config config, const std::filesystem::path& checkpoint) {
   ShearCellState previous = load_checkpoint(checkpoint);
-  const Vec3& size = config.cell->size;
+  const Vec3& size = config.cell()->size;
   if (previous.world.box.length[0] != size[0] || previous.world.box.length[1] != size[1] ||
       previous.walls.top().spheres.empty())
     throw std::runtime_error(fmt::format("{}: not a state of this cell (cell.size = [{}, {}, {}])",
@@ -111,7 +111,7 @@ bool ShearCell::snapshot_due() const {
 
 const StepReport& ShearCell::step() {
   ShearCellState& s = state_;
-  const double lz = config_.cell->size[2];
+  const double lz = config_.cell()->size[2];
   s.dt = choose_dt();
   stepper_.set_dt(s.dt);
   const SlidingWall& wall = s.walls.top();
@@ -150,7 +150,7 @@ const StepReport& ShearCell::step() {
 
 void ShearCell::accumulate(const StepReport& report) {
   ShearCellState& s = state_;
-  const CellConfig& cell = *config_.cell;
+  const CellConfig& cell = *config_.cell();
   const std::vector<Contact>& contacts = stepper_.contacts();
   const double dt = s.dt, area = cell.size[0] * cell.size[1];
   const bool steady = s.strain > config_.run.transient_strain;

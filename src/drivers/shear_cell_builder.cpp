@@ -30,7 +30,7 @@ void add_wall(World& world, std::vector<BodyGroup>& groups, const std::vector<Wa
 }  // namespace
 
 World build_shear_cell(const Config& config, ShearCellGeometry& geometry, RoughWalls& walls) {
-  const CellConfig& cell = *config.cell;
+  const CellConfig& cell = *config.cell();
   const double lx = cell.size[0], ly = cell.size[1], lz = cell.size[2];
   std::mt19937_64 rng(static_cast<std::uint64_t>(cell.seed));
 

@@ -1,7 +1,7 @@
 #pragma once
-// The paper's shear cell (docs/model.md "The shear cell"; Fernandez et al. 2013, p. 2): mobile spheres between a fixed rough bottom
-// wall and a rough top wall that slides along x under a constant force, periodic
-// in x and y, at constant volume.
+// The paper's shear cell (docs/model.md "The shear cell"; Fernandez et al. 2013, p. 2): mobile
+// spheres between a fixed rough bottom wall and a rough top wall that slides along x under a
+// constant force, periodic in x and y, at constant volume.
 //
 //     z = Lz  ooooooooooooooooo  top wall: glued spheres, one rigid body, moves in x
 //              .  o  . o  .  o
@@ -30,7 +30,7 @@ struct ShearCellGeometry {
   double max_overlap = 0.0;
 };
 
-// Builds the walls and a packing of mobile spheres at config.cell->phi,
+// Builds the walls and a packing of mobile spheres at config.cell()->phi,
 // reproducibly from cell.seed: the world (walls' spheres first, then the mobile
 // ones numbered by height) and its boundary, the rough walls. The walls'
 // contact law is left at its default: it depends on eta_f, a run setting.

@@ -42,7 +42,7 @@ void ShearCell::write_snapshot(const std::filesystem::path& out) {
 
 void ShearCell::write_series(const std::filesystem::path& out) const {
   std::string csv = flow_csv_header();
-  for (const FlowRow& r : state_.rows) csv += flow_csv_row(r, config_.cell->size[2]);
+  for (const FlowRow& r : state_.rows) csv += flow_csv_row(r, config_.cell()->size[2]);
   write_file_atomically(out / "timeseries.csv", csv);
 }
 
@@ -62,12 +62,12 @@ std::string ShearCell::progress_line(double elapsed) const {
   const double v = s.interval.time > 0.0 ? s.interval.velocity / s.interval.time
                    : s.rows.empty()      ? s.walls.top().velocity
                                          : s.rows.back().wall_velocity;
-  const double gdot = shear_rate(v, config_.cell->size[2]);
+  const double gdot = shear_rate(v, config_.cell()->size[2]);
   const double done = s.strain / config_.run.strain;
   const double left = done > 0.0 ? elapsed * (1.0 - done) / done : 0.0;
   return fmt::format("strain {:6.2f}/{:.2f}  gamma_dot {:9.3g}  eta {:9.3g}  left {:5.0f} s ",
                      s.strain, config_.run.strain, gdot / units_.rate_unit,
-                     relative_viscosity(config_.cell->shear_stress, gdot, units_.eta_f), left);
+                     relative_viscosity(config_.cell()->shear_stress, gdot, units_.eta_f), left);
 }
 
 }  // namespace dilatant

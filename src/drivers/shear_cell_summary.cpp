@@ -12,7 +12,7 @@ namespace dilatant {
 
 nlohmann::json cell_summary(const Config& config, const CellUnits& u, const ShearCellState& s,
                             const RunCost& cost) {
-  const CellConfig& cell = *config.cell;
+  const CellConfig& cell = *config.cell();
   const double lz = cell.size[2], area = cell.size[0] * cell.size[1];
   const double from = config.run.transient_strain;
   const Rheology rheology = steady_rheology(s.rows, from,

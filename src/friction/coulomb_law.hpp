@@ -1,13 +1,14 @@
 #pragma once
 // Amontons–Coulomb friction with a constant coefficient mu0: the paper's
 // "no hydrodynamics" control run.
+#include "friction/defaults.hpp"
 #include "friction/sommerfeld.hpp"
 #include "friction/tangential_problem.hpp"
 
 namespace dilatant {
 
 struct CoulombLaw {
-  double mu0 = 0.1;
+  double mu0 = friction_defaults::kMu0;
   double eta_f = 0.0;  // only to report the Sommerfeld number; friction ignores it
 
   double mu(double /*sommerfeld*/) const { return mu0; }

@@ -34,14 +34,15 @@
 //  an HD answer with s >= s_c exists; only when its speed would fall below v_c
 //  does rule 1-3 decide. Both rules have the same dt -> 0 limit.
 //  The paper's HD formula needs s_c < 5/(6 pi) for mu > 0; the config checks it.
+#include "friction/defaults.hpp"
 #include "friction/tangential_problem.hpp"
 
 namespace dilatant {
 
 struct StribeckLaw {
-  double mu0 = 0.1;
-  double s_c = 5e-5;
-  double s_lim = 0.1;
+  double mu0 = friction_defaults::kMu0;
+  double s_c = friction_defaults::kSc;
+  double s_lim = friction_defaults::kSlim;
   double eta_f = 0.0;  // fluid viscosity, in the units of the simulation
 
   // Lubrication-theory friction (paper, Supplemental Material), no cap.

@@ -10,18 +10,10 @@
 #include <vector>
 
 #include "geometry/vec3.hpp"
+#include "io/config.hpp"
 
 namespace dilatant::config_detail {
 
-// The known keys, section by section: the single list that both the unknown-key
-// check and the `--set` check use.
-struct SectionKeys {
-  std::string_view name;
-  std::span<const std::string_view> keys;
-};
-std::span<const SectionKeys> schema();
-const SectionKeys* find_section(std::string_view name);
-std::span<const std::string_view> plane_keys();
 bool contains(std::span<const std::string_view> keys, std::string_view key);
 std::string join(std::span<const std::string_view> keys);
 
@@ -52,6 +44,7 @@ class Section {
   Section(const std::string& source, const toml::node* table, std::string path);
 
   const toml::node* find(std::string_view key) const;
+  const toml::table* find_table() const { return table_; }
   const toml::node& require(std::string_view key, std::string_view why) const;
   double number(std::string_view key, double fallback) const;
   std::int64_t integer(std::string_view key, std::int64_t fallback) const;
@@ -89,5 +82,8 @@ void check(const Section& s, std::string_view key, const T& value, bool ok, std:
 
 // Applies "--set key=value" overrides to the parsed document.
 void apply_overrides(toml::table& root, const std::vector<std::string>& overrides);
+
+// The [[scene.planes]] tables of a [scene] section (each a point and a normal).
+std::vector<PlaneConfig> read_planes(const Section& scene);
 
 }  // namespace dilatant::config_detail

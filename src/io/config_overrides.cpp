@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "io/config_detail.hpp"
+#include "io/config_keys.hpp"
 #include "io/input_error.hpp"
 
 namespace dilatant::config_detail {
@@ -44,16 +45,12 @@ toml::table parse_value(std::string_view value) {
 // Only known keys may be set, so a typo is reported as such and not as a key
 // silently created (or as an unknown key in a section the file lacks).
 void check_known(const std::vector<std::string>& parts, const std::string& key) {
-  const auto* section = find_section(parts[0]);
-  if (section == nullptr) {
-    std::vector<std::string_view> names;
-    for (const auto& s : schema()) names.push_back(s.name);
-    throw InputError(
-        fmt::format("--set {}: unknown section '{}' (known: {})", key, parts[0], join(names)));
-  }
-  if (parts.size() >= 2 && !contains(section->keys, parts[1]))
+  if (!is_config_section(parts[0]))
+    throw InputError(fmt::format("--set {}: unknown section '{}' (known: {})", key, parts[0],
+                                 join(config_sections())));
+  if (parts.size() >= 2 && find_config_key(parts[0], parts[1]) == nullptr)
     throw InputError(fmt::format("--set {}: unknown key (known in [{}]: {})", key, parts[0],
-                                 join(section->keys)));
+                                 join(config_key_names(parts[0]))));
   if (parts.size() > 2)
     throw InputError(fmt::format("--set {}: '{}.{}' is not a table; set it as a whole", key,
                                  parts[0], parts[1]));

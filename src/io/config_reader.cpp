@@ -12,45 +12,9 @@
 namespace dilatant::config_detail {
 namespace {
 
-using namespace std::string_view_literals;
-constexpr std::array kCellKeys = {"size"sv,       "phi"sv,           "radius_min"sv,
-                                  "radius_max"sv, "seed"sv,          "shear_stress"sv,
-                                  "wall_mass"sv,  "wall_friction"sv, "initial_shear_rate"sv};
-constexpr std::array kSceneKeys = {"particles"sv,           "gravity"sv, "box"sv, "periodic"sv,
-                                   "trajectory_interval"sv, "planes"sv};
-constexpr std::array kParticlesKeys = {"density"sv};
-constexpr std::array kFrictionKeys = {"law"sv, "mu0"sv, "s_c"sv, "s_lim"sv};
-constexpr std::array kFluidKeys = {"lambda"sv, "eta_f"sv};
-constexpr std::array kSolverKeys = {
-    "dt"sv,      "tolerance"sv, "max_iterations"sv, "max_displacement"sv, "freeze_branches_after"sv,
-    "threads"sv, "relaxation"sv};
-constexpr std::array kRunKeys = {"strain"sv,
-                                 "time"sv,
-                                 "transient_strain"sv,
-                                 "output_interval"sv,
-                                 "checkpoint_interval"sv,
-                                 "snapshot_interval"sv};
-constexpr std::array kPlaneKeys = {"point"sv, "normal"sv};
-
-const std::array<SectionKeys, 7> kSchema = {{{"cell", kCellKeys},
-                                             {"scene", kSceneKeys},
-                                             {"particles", kParticlesKeys},
-                                             {"friction", kFrictionKeys},
-                                             {"fluid", kFluidKeys},
-                                             {"solver", kSolverKeys},
-                                             {"run", kRunKeys}}};
+constexpr std::array kPlaneKeys = {std::string_view("point"), std::string_view("normal")};
 
 }  // namespace
-
-std::span<const SectionKeys> schema() { return kSchema; }
-
-const SectionKeys* find_section(std::string_view name) {
-  for (const auto& s : kSchema)
-    if (s.name == name) return &s;
-  return nullptr;
-}
-
-std::span<const std::string_view> plane_keys() { return kPlaneKeys; }
 
 bool contains(std::span<const std::string_view> keys, std::string_view key) {
   return std::find(keys.begin(), keys.end(), key) != keys.end();
@@ -207,6 +171,29 @@ void Section::reject_unknown(std::span<const std::string_view> known) const {
     if (!contains(known, key.str()))
       throw InputError(fmt::format("{}: unknown key (known in [{}]: {})",
                                    where(source_, &node, name(key.str())), path_, join(known)));
+}
+
+std::vector<PlaneConfig> read_planes(const Section& scene) {
+  std::vector<PlaneConfig> planes;
+  const auto* node = scene.find("planes");
+  if (node == nullptr) return planes;
+  const auto* array = node->as_array();
+  if (array == nullptr || !(array->empty() || array->is_array_of_tables()))
+    throw InputError(fmt::format("{}: expected an array of tables ([[scene.planes]])",
+                                 where(scene.source(), node, "scene.planes")));
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const Section s(scene.source(), array->get(i), fmt::format("scene.planes[{}]", i));
+    s.reject_unknown(kPlaneKeys);
+    PlaneConfig p;
+    s.require("point", "a plane needs a point and a normal");
+    s.require("normal", "a plane needs a point and a normal");
+    p.point = s.vec3("point", p.point);
+    p.normal = s.vec3("normal", p.normal);
+    check(s, "normal", p.normal, p.normal.norm() > 0.0, "must not be the zero vector");
+    p.normal.normalize();
+    planes.push_back(p);
+  }
+  return planes;
 }
 
 }  // namespace dilatant::config_detail

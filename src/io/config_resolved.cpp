@@ -6,15 +6,10 @@
 
 #include "io/config.hpp"
 #include "io/config_detail.hpp"
+#include "io/config_keys.hpp"
+#include "measure/cell_units.hpp"
 
 namespace dilatant {
-namespace {
-
-toml::array array3(const Vec3& v) { return toml::array{v.x(), v.y(), v.z()}; }
-toml::array array3(const std::array<bool, 3>& v) { return toml::array{v[0], v[1], v[2]}; }
-
-}  // namespace
-
 std::string toml_value_text(const toml::node& n) {
   if (const auto* d = n.as_floating_point()) {
     auto text = fmt::format("{}", d->get());  // shortest text that reads back exactly
@@ -33,52 +28,21 @@ std::string toml_value_text(const toml::node& n) {
 }
 
 toml::table to_toml(const Config& c) {
+  const RunMode mode = run_mode(c);
   toml::table t;
-  if (c.cell) {
-    const auto& cell = *c.cell;
-    t.insert("cell", toml::table{{"size", array3(cell.size)},
-                                 {"phi", cell.phi},
-                                 {"radius_min", cell.radius_min},
-                                 {"radius_max", cell.radius_max},
-                                 {"seed", cell.seed},
-                                 {"shear_stress", cell.shear_stress},
-                                 {"wall_mass", cell.wall_mass},
-                                 {"wall_friction", cell.wall_friction},
-                                 {"initial_shear_rate", cell.initial_shear_rate}});
+  for (std::string_view section : config_sections()) {
+    toml::table table;
+    for (const ConfigKey& k : config_keys())
+      if (k.section == section && k.applies_to(mode)) k.write(c, table);
+    if (!table.empty()) t.insert(section, std::move(table));
   }
-  if (c.scene) {
-    const auto& scene = *c.scene;
-    toml::array planes;
-    for (const auto& p : scene.planes)
-      planes.push_back(toml::table{{"point", array3(p.point)}, {"normal", array3(p.normal)}});
-    t.insert("scene", toml::table{{"particles", scene.particles.string()},
-                                  {"gravity", array3(scene.gravity)},
-                                  {"box", array3(scene.box)},
-                                  {"periodic", array3(scene.periodic)},
-                                  {"trajectory_interval", scene.trajectory_interval},
-                                  {"planes", std::move(planes)}});
-  }
-  t.insert("particles", toml::table{{"density", c.density}});
-  t.insert("friction",
-           toml::table{{"law", c.friction.law == FrictionLawKind::Coulomb ? "coulomb" : "stribeck"},
-                       {"mu0", c.friction.mu0},
-                       {"s_c", c.friction.s_c},
-                       {"s_lim", c.friction.s_lim}});
-  t.insert("fluid", toml::table{{"lambda", c.fluid.lambda}, {"eta_f", c.fluid.eta_f}});
-  t.insert("solver", toml::table{{"dt", c.solver.dt},
-                                 {"tolerance", c.solver.tolerance},
-                                 {"max_iterations", c.solver.max_iterations},
-                                 {"max_displacement", c.solver.max_displacement},
-                                 {"freeze_branches_after", c.solver.freeze_branches_after},
-                                 {"threads", c.solver.threads},
-                                 {"relaxation", c.solver.relaxation}});
-  t.insert("run", toml::table{{"strain", c.run.strain},
-                              {"time", c.run.time},
-                              {"transient_strain", c.run.transient_strain},
-                              {"output_interval", c.run.output_interval},
-                              {"checkpoint_interval", c.run.checkpoint_interval},
-                              {"snapshot_interval", c.run.snapshot_interval}});
   return t;
+}
+
+double Config::fluid_viscosity() const {
+  if (const CellConfig* c = cell())
+    return make_cell_units(c->shear_stress, density, c->radius_max, fluid.lambda).eta_f;
+  return fluid.eta_f;
 }
 
 std::string resolved_toml(const Config& c) {
@@ -89,23 +53,30 @@ std::string resolved_toml(const Config& c) {
   const auto t = to_toml(c);
   std::string out = fmt::format(
       "# dilatant: resolved configuration of this run (every key, defaults filled in;\n"
-      "# keys and units are documented in src/io/config.hpp). Loaded from: {}\n",
+      "# keys and units: `dilatant run --help`). Loaded from: {}\n",
       c.source);
-  for (const auto& section : config_detail::schema()) {
-    const auto* table = t.get_as<toml::table>(section.name);
+  for (std::string_view section : config_sections()) {
+    const auto* table = t.get_as<toml::table>(section);
     if (table == nullptr) continue;
-    out += fmt::format("\n[{}]\n", section.name);
+    out += fmt::format("\n[{}]\n", section);
     const toml::array* planes = nullptr;
-    for (const auto key : section.keys) {
-      const auto* node = table->get(key);
-      if (key == "planes")
+    for (const ConfigKey& k : config_keys()) {
+      if (k.section != section || !table->contains(k.name)) continue;
+      const auto* node = table->get(k.name);
+      if (k.name == "planes")
         planes = node->as_array();  // must follow the plain keys
       else
-        out += fmt::format("{} = {}\n", key, toml_value_text(*node));
+        out += fmt::format("{} = {}\n", k.name, toml_value_text(*node));
     }
+    // The cell derives the fluid viscosity from lambda: show the value used,
+    // as a comment (it is not a key of a [cell] run).
+    if (section == "fluid" && c.cell())
+      out +=
+          fmt::format("# eta_f = {}  (derived: sqrt(shear_stress density) radius_max / lambda)\n",
+                      toml_value_text(toml::value<double>(c.fluid_viscosity())));
     for (std::size_t i = 0; planes && i < planes->size(); ++i) {
       out += "\n[[scene.planes]]\n";
-      for (const auto key : config_detail::plane_keys())
+      for (const auto key : {"point", "normal"})
         out +=
             fmt::format("{} = {}\n", key, toml_value_text(*planes->get(i)->as_table()->get(key)));
     }

@@ -111,7 +111,7 @@ std::string flowcurves_csv(const SweepPlan& plan, const std::vector<PointRecord>
     row.push_back(fmt::format("{}", p.index));
     row.emplace_back(status_name(r.status));
     row.push_back(r.status == PointStatus::Failed ? field(r.error) : "");
-    row.push_back(fmt::format("{}", p.config.cell->phi));
+    row.push_back(fmt::format("{}", p.config.cell()->phi));
     row.push_back(fmt::format("{}", p.config.friction.mu0));
     row.push_back(fmt::format("{}", p.config.fluid.lambda));
     for (auto c : kSummaryBefore) row.push_back(summary_field(r, c));

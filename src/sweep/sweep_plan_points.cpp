@@ -128,7 +128,7 @@ std::string resolved_sweep_toml(const SweepPlan& plan) {
   std::string out = fmt::format(
       "# dilatant: the resolved sweep of {} ({} points; swept: {}).\n"
       "# Every point is listed: `dilatant sweep` of this file into the same --out\n"
-      "# is the same sweep and resumes it. Keys: src/io/config.hpp, docs/sweeps.md.\n",
+      "# is the same sweep and resumes it. Keys: dilatant run --help, docs/sweeps.md.\n",
       plan.source, plan.points.size(), plan.keys.empty() ? "nothing" : join(plan.keys, ", "));
   const SweepSettings& s = plan.settings;
   out += fmt::format("\n[sweep]\njobs = {}\ncontinuation = {}\n", s.jobs, s.continuation);

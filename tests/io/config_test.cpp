@@ -45,7 +45,6 @@ max_iterations = 200
 
 [run]
 time = 2.0
-output_interval = 0.01
 )";
 
 Config parse(const std::string& text, const std::vector<std::string>& overrides = {}) {
@@ -54,9 +53,9 @@ Config parse(const std::string& text, const std::vector<std::string>& overrides 
 
 TEST(Config, ValidSceneParsesToTheExpectedValues) {
   const auto c = parse(kScene);
-  ASSERT_TRUE(c.scene);
-  EXPECT_FALSE(c.cell);
-  const auto& s = *c.scene;
+  ASSERT_TRUE(c.scene());
+  EXPECT_FALSE(c.cell());
+  const auto& s = *c.scene();
   EXPECT_EQ(s.particles, std::filesystem::path("/base/inputs/particles.csv"));
   EXPECT_EQ(s.gravity, Vec3(0.0, -1.0, 0.0));
   EXPECT_EQ(s.box, Vec3(4.0, 0.0, 5.5));
@@ -77,15 +76,14 @@ TEST(Config, ValidSceneParsesToTheExpectedValues) {
   EXPECT_EQ(c.solver.tolerance, 1e-8);
   EXPECT_EQ(c.solver.max_iterations, 200);
   EXPECT_EQ(c.run.time, 2.0);
-  EXPECT_EQ(c.run.output_interval, 0.01);
   EXPECT_EQ(c.source, "test.toml");
 }
 
 TEST(Config, DefaultsFillInEveryMissingKey) {
   const auto c = parse("[cell]\n");
-  ASSERT_TRUE(c.cell);
-  EXPECT_FALSE(c.scene);
-  const auto& cell = *c.cell;
+  ASSERT_TRUE(c.cell());
+  EXPECT_FALSE(c.scene());
+  const auto& cell = *c.cell();
   EXPECT_EQ(cell.size, Vec3(25.0, 10.0, 27.0));
   EXPECT_EQ(cell.phi, 0.58);
   EXPECT_EQ(cell.radius_min, 0.8);
@@ -116,8 +114,8 @@ TEST(Config, DefaultsFillInEveryMissingKey) {
 TEST(Config, BuiltInDefaultIsThePapersCell) {
   const auto c = default_cell_config();
   EXPECT_EQ(c.source, "<built-in>");
-  ASSERT_TRUE(c.cell);
-  EXPECT_EQ(c.cell->phi, 0.58);
+  ASSERT_TRUE(c.cell());
+  EXPECT_EQ(c.cell()->phi, 0.58);
   EXPECT_EQ(c.friction.mu0, 0.1);
   EXPECT_EQ(c.friction.s_c, 5e-5);
   EXPECT_EQ(c.friction.law, FrictionLawKind::Stribeck);
@@ -127,7 +125,7 @@ TEST(Config, BuiltInDefaultIsThePapersCell) {
   EXPECT_EQ(c.run.transient_strain, 1.5);
   const auto changed = default_cell_config({"friction.mu0=0.35", "cell.phi=0.59"});
   EXPECT_EQ(changed.friction.mu0, 0.35);
-  EXPECT_EQ(changed.cell->phi, 0.59);
+  EXPECT_EQ(changed.cell()->phi, 0.59);
 }
 
 void expect_round_trip(const Config& c) {
@@ -139,18 +137,18 @@ void expect_round_trip(const Config& c) {
   EXPECT_EQ(again.friction.s_c, c.friction.s_c);
   EXPECT_EQ(again.solver.tolerance, c.solver.tolerance);
   EXPECT_EQ(again.run.output_interval, c.run.output_interval);
-  EXPECT_EQ(again.cell.has_value(), c.cell.has_value());
-  EXPECT_EQ(again.scene.has_value(), c.scene.has_value());
+  EXPECT_EQ(again.cell() != nullptr, c.cell() != nullptr);
+  EXPECT_EQ(again.scene() != nullptr, c.scene() != nullptr);
 }
 
 TEST(Config, ResolvedTomlRoundTrips) {
   const auto scene = parse(kScene);
   expect_round_trip(scene);
   const auto again = parse_config(resolved_toml(scene), "config.toml", "/elsewhere", {});
-  EXPECT_EQ(again.scene->particles, scene.scene->particles);  // absolute: base dir ignored
-  EXPECT_EQ(again.scene->planes.size(), 2u);
-  EXPECT_EQ(again.scene->planes[1].normal, scene.scene->planes[1].normal);
-  EXPECT_EQ(again.scene->periodic, scene.scene->periodic);
+  EXPECT_EQ(again.scene()->particles, scene.scene()->particles);  // absolute: base dir ignored
+  EXPECT_EQ(again.scene()->planes.size(), 2u);
+  EXPECT_EQ(again.scene()->planes[1].normal, scene.scene()->planes[1].normal);
+  EXPECT_EQ(again.scene()->periodic, scene.scene()->periodic);
 
   expect_round_trip(parse("[cell]\n"));
   // Values without a short decimal form survive exactly too.
@@ -163,7 +161,7 @@ TEST(Config, LoadConfigResolvesParticlesNextToTheFile) {
   test::TempDir dir;
   const auto file = dir.write("setup/scene.toml", kScene);
   const auto c = load_config(file, {});
-  EXPECT_EQ(c.scene->particles, (dir.path() / "setup/inputs/particles.csv").lexically_normal());
+  EXPECT_EQ(c.scene()->particles, (dir.path() / "setup/inputs/particles.csv").lexically_normal());
   EXPECT_EQ(c.source, file.string());
   const auto message = test::input_error_message(
       [&] { load_config(dir.write("bad.toml", "[cell]\n\n[friction]\nmu0 = -0.1\n"), {}); });
@@ -177,7 +175,7 @@ TEST(Config, OverridesSetNumbersArraysStringsAndBareWords) {
                        {"friction.mu0=0.3", "cell.size=[10.0, 6.0, 12.0]", "run.strain = 20",
                         "friction.law=\"coulomb\"", "solver.max_iterations=50"});
   EXPECT_EQ(c.friction.mu0, 0.3);
-  EXPECT_EQ(c.cell->size, Vec3(10.0, 6.0, 12.0));
+  EXPECT_EQ(c.cell()->size, Vec3(10.0, 6.0, 12.0));
   EXPECT_EQ(c.run.strain, 20.0);
   EXPECT_EQ(c.friction.law, FrictionLawKind::Coulomb);
   EXPECT_EQ(c.solver.max_iterations, 50);  // [solver] created by the override
@@ -188,10 +186,10 @@ TEST(Config, OverridesSetNumbersArraysStringsAndBareWords) {
   const auto scene = parse(
       kScene, {"scene.periodic=[false, true, false]", "scene.box=[1, 2, 3]",
                "scene.particles=other.csv", "scene.planes=[{point=[0,0,0], normal=[0,0,3]}]"});
-  EXPECT_EQ(scene.scene->periodic, (std::array<bool, 3>{false, true, false}));
-  EXPECT_EQ(scene.scene->particles, std::filesystem::path("/base/other.csv"));
-  ASSERT_EQ(scene.scene->planes.size(), 1u);
-  EXPECT_EQ(scene.scene->planes[0].normal, Vec3(0.0, 0.0, 1.0));
+  EXPECT_EQ(scene.scene()->periodic, (std::array<bool, 3>{false, true, false}));
+  EXPECT_EQ(scene.scene()->particles, std::filesystem::path("/base/other.csv"));
+  ASSERT_EQ(scene.scene()->planes.size(), 1u);
+  EXPECT_EQ(scene.scene()->planes[0].normal, Vec3(0.0, 0.0, 1.0));
   // An overridden value shows in the resolved configuration.
   EXPECT_EQ(scene.resolved.at_path("scene.box").as_array()->size(), 3u);
   EXPECT_EQ(scene.resolved.at_path("scene.box[1]").value<double>(), 2.0);
@@ -265,7 +263,10 @@ INSTANTIATE_TEST_SUITE_P(
                  "[cell]\n[friction]\nlaw = 'viscous'\n",
                  {},
                  {"friction.law = \"viscous\"", "stribeck"}},
-        BadInput{"NegativeEtaF", "[cell]\n[fluid]\neta_f = -1\n", {}, {"fluid.eta_f = -1"}},
+        BadInput{"NegativeEtaF",
+                 "[scene]\nparticles = \"p.csv\"\n[run]\ntime = 1.0\n[fluid]\neta_f = -1\n",
+                 {},
+                 {"fluid.eta_f = -1"}},
         BadInput{"ZeroLambda", "[cell]\n[fluid]\nlambda = 0\n", {}, {"fluid.lambda = 0"}},
         BadInput{
             "ZeroDensity", "[cell]\n[particles]\ndensity = 0.0\n", {}, {"particles.density = 0"}},
@@ -276,7 +277,40 @@ INSTANTIATE_TEST_SUITE_P(
                  {},
                  {"solver.max_iterations = 0"}},
         BadInput{"NegativeStrain", "[cell]\n[run]\nstrain = -1\n", {}, {"run.strain = -1"}},
-        BadInput{"NegativeTime", "[cell]\n[run]\ntime = -1\n", {}, {"run.time = -1"}},
+        BadInput{"NegativeTime",
+                 "[scene]\nparticles = \"p.csv\"\n[run]\ntime = -1\n",
+                 {},
+                 {"run.time = -1: must be > 0 in scene mode"}},
+        // Keys of the other run mode are errors, never silently ignored.
+        BadInput{"EtaFInACell",
+                 "[cell]\n[fluid]\neta_f = 0.1\n",
+                 {},
+                 {"test.toml:3: fluid.eta_f: not a key of a [cell] run",
+                  "derives eta_f = sqrt(tau rho_p) R / fluid.lambda"}},
+        BadInput{"EtaFInACellBySet",
+                 "[cell]\n",
+                 {"fluid.eta_f=0.1"},
+                 {"--set fluid.eta_f: not a key of a [cell] run"}},
+        BadInput{"LambdaInAScene",
+                 "[scene]\nparticles = \"p.csv\"\n[run]\ntime = 1.0\n[fluid]\nlambda = 3.0\n",
+                 {},
+                 {"fluid.lambda: not a key of a [scene] run (it belongs to [cell] runs)"}},
+        BadInput{"TimeInACell",
+                 "[cell]\n[run]\ntime = 3.0\n",
+                 {},
+                 {"run.time: not a key of a [cell] run"}},
+        BadInput{"StrainInAScene",
+                 "[scene]\nparticles = \"p.csv\"\n[run]\ntime = 1.0\nstrain = 2.0\n",
+                 {},
+                 {"run.strain: not a key of a [scene] run"}},
+        BadInput{"OutputIntervalInAScene",
+                 "[scene]\nparticles = \"p.csv\"\n[run]\ntime = 1.0\noutput_interval = 0.1\n",
+                 {},
+                 {"run.output_interval: not a key of a [scene] run"}},
+        BadInput{"MaxDisplacementInAScene",
+                 "[scene]\nparticles = \"p.csv\"\n[run]\ntime = 1.0\n",
+                 {"solver.max_displacement=0.01"},
+                 {"--set solver.max_displacement: not a key of a [scene] run"}},
         BadInput{"TransientNotBelowStrain",
                  "[cell]\n[run]\nstrain = 2\ntransient_strain = 2\n",
                  {},

@@ -38,7 +38,7 @@ TEST(SweepPlan, TheGridRunsOverEveryListWithTheLastKeyOfTheFileFastest) {
     EXPECT_EQ(p.index, k);
     EXPECT_EQ(p.config.friction.mu0, mu0[k]);
     EXPECT_EQ(p.config.fluid.lambda, lambda[k]);
-    EXPECT_EQ(p.config.cell->phi, 0.58);  // the shared keys as in the file
+    EXPECT_EQ(p.config.cell()->phi, 0.58);  // the shared keys as in the file
     EXPECT_EQ(p.config.run.strain, 0.3);
     EXPECT_FALSE(p.continues_from);
   }
@@ -71,12 +71,12 @@ law = ["stribeck", "coulomb"]
   const SweepPlan plan = parse(text);
   EXPECT_EQ(plan.keys, (std::vector<std::string>{"cell.size", "cell.seed", "friction.law"}));
   ASSERT_EQ(plan.points.size(), 8u);
-  EXPECT_EQ(plan.points[7].config.cell->size, Vec3(8, 6, 9));
+  EXPECT_EQ(plan.points[7].config.cell()->size, Vec3(8, 6, 9));
   EXPECT_EQ(plan.points[7].config.friction.law, FrictionLawKind::Coulomb);
   EXPECT_EQ(plan.points[7].label, "size=8x6x9_seed=2_law=coulomb");
   EXPECT_EQ(plan.points[7].values[0], "[8.0, 6.0, 9.0]");
   // One array is the value itself, not a sweep.
-  EXPECT_EQ(parse(test::kTinyCell).points[0].config.cell->size, Vec3(6, 5, 7));
+  EXPECT_EQ(parse(test::kTinyCell).points[0].config.cell()->size, Vec3(6, 5, 7));
 }
 
 TEST(SweepPlan, PointsTablesListPointsAndMayHoldSmallGrids) {
@@ -100,8 +100,8 @@ law = "coulomb"
   ASSERT_EQ(plan.points.size(), 6u);  // 2 x 2, then 2
   EXPECT_EQ(plan.points[1].config.friction.mu0, 0.3);
   EXPECT_EQ(plan.points[1].config.fluid.lambda, 1.0);
-  EXPECT_EQ(plan.points[1].config.cell->phi, 0.58);
-  EXPECT_EQ(plan.points[5].config.cell->phi, 0.55);
+  EXPECT_EQ(plan.points[1].config.cell()->phi, 0.58);
+  EXPECT_EQ(plan.points[5].config.cell()->phi, 0.55);
   EXPECT_EQ(plan.points[5].config.fluid.lambda, 10.0);
   EXPECT_EQ(plan.points[5].config.friction.law, FrictionLawKind::Coulomb);
   // Keys a point does not set keep the file's value in its label and row.
@@ -115,7 +115,7 @@ TEST(SweepPlan, OverridesSweepKeysSetSettingsAndWinOverPointsTables) {
   const SweepPlan plan = parse(text, {"fluid.lambda=[3.0, 30.0]", "cell.phi=0.5", "sweep.jobs=3"});
   EXPECT_EQ(plan.settings.jobs, 3);
   ASSERT_EQ(plan.points.size(), 4u);
-  for (const auto& p : plan.points) EXPECT_EQ(p.config.cell->phi, 0.5);
+  for (const auto& p : plan.points) EXPECT_EQ(p.config.cell()->phi, 0.5);
   EXPECT_EQ(plan.points[3].config.friction.mu0, 0.2);
   EXPECT_EQ(plan.points[3].config.fluid.lambda, 30.0);
   EXPECT_EQ(plan.keys.back(), "fluid.lambda");  // overrides come after the file's keys

@@ -1,0 +1,317 @@
+// The table of configuration keys (io/config_keys.hpp): one entry per key.
+#include "io/config_keys.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "io/input_error.hpp"
+
+namespace dilatant {
+namespace {
+
+using config_detail::Section;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// The HD friction 2 pi s ln(5/(6 pi s)) is positive only below this (docs/model.md "Friction").
+constexpr double kSommerfeldMax = 5.0 / (6.0 * std::numbers::pi);
+
+// Where each section's struct lives in a Config (cell and scene: the run mode).
+template <class T>
+using Get = T& (*)(Config&);
+CellConfig& cell(Config& c) { return std::get<CellConfig>(c.mode); }
+SceneConfig& scene(Config& c) { return std::get<SceneConfig>(c.mode); }
+FrictionConfig& friction(Config& c) { return c.friction; }
+FluidConfig& fluid(Config& c) { return c.fluid; }
+SolverConfig& solver(Config& c) { return c.solver; }
+RunConfig& run(Config& c) { return c.run; }
+// write() reads through the same accessors; they do not modify.
+Config& mut(const Config& c) { return const_cast<Config&>(c); }
+
+// An interval of accepted numbers and how a message states it.
+struct Range {
+  double lo = -kInf, hi = kInf;
+  bool lo_closed = true, hi_closed = true;
+  std::string_view hi_text = {};  // shown instead of hi ("5/(6 pi) ~ 0.2653")
+  std::string_view note = {};     // appended to the message (" (0 = automatic)")
+
+  bool contains(double v) const {
+    return (lo_closed ? v >= lo : v > lo) && (hi_closed ? v <= hi : v < hi);
+  }
+  std::string text() const {
+    const std::string h = hi_text.empty() ? fmt::format("{}", hi) : std::string(hi_text);
+    if (lo == -kInf && hi == kInf) return "";
+    if (hi == kInf) return fmt::format("{} {}", lo_closed ? ">=" : ">", lo);
+    if (lo == -kInf) return fmt::format("{} {}", hi_closed ? "<=" : "<", h);
+    return fmt::format("{}{}, {}{}", lo_closed ? "[" : "(", lo, h, hi_closed ? "]" : ")");
+  }
+  std::string message() const {
+    const std::string t = text();
+    return (hi == kInf || lo == -kInf ? "must be " + t : "must be in " + t) + std::string(note);
+  }
+};
+Range at_least(double lo, std::string_view note = {}) { return {lo, kInf, true, true, {}, note}; }
+Range above(double lo) { return {lo, kInf, false, true, {}, {}}; }
+Range open(double lo, double hi) { return {lo, hi, false, false, {}, {}}; }
+
+template <class S>
+ConfigKey number(std::string_view section, std::string_view name, RunMode mode, Get<S> get,
+                 double S::*member, Range range, std::string_view unit, std::string_view doc) {
+  return ConfigKey{section,
+                   name,
+                   mode,
+                   "float",
+                   unit,
+                   range.text(),
+                   doc,
+                   [=](const Section& s, Config& c, const std::filesystem::path&) {
+                     double& v = get(c).*member;
+                     v = s.number(name, v);
+                     config_detail::check(s, name, v, range.contains(v), range.message());
+                   },
+                   [=](const Config& c, toml::table& t) { t.insert(name, get(mut(c)).*member); }};
+}
+
+template <class S>
+ConfigKey integer(std::string_view section, std::string_view name, RunMode mode, Get<S> get,
+                  int S::*member, std::int64_t lo, std::int64_t hi, std::string_view message,
+                  std::string_view range_text, std::string_view doc) {
+  return ConfigKey{section,
+                   name,
+                   mode,
+                   "integer",
+                   "",
+                   std::string(range_text),
+                   doc,
+                   [=](const Section& s, Config& c, const std::filesystem::path&) {
+                     int& v = get(c).*member;
+                     const std::int64_t read = s.integer(name, v);
+                     config_detail::check(s, name, read, read >= lo && read <= hi, message);
+                     v = static_cast<int>(read);
+                   },
+                   [=](const Config& c, toml::table& t) { t.insert(name, get(mut(c)).*member); }};
+}
+
+template <class S>
+ConfigKey vec3(std::string_view section, std::string_view name, RunMode mode, Get<S> get,
+               Vec3 S::*member, bool (*ok)(const Vec3&), std::string_view message,
+               std::string_view range_text, std::string_view unit, std::string_view doc) {
+  return ConfigKey{section,
+                   name,
+                   mode,
+                   "[float, float, float]",
+                   unit,
+                   std::string(range_text),
+                   doc,
+                   [=](const Section& s, Config& c, const std::filesystem::path&) {
+                     Vec3& v = get(c).*member;
+                     v = s.vec3(name, v);
+                     if (ok != nullptr) config_detail::check(s, name, v, ok(v), message);
+                   },
+                   [=](const Config& c, toml::table& t) {
+                     const Vec3& v = get(mut(c)).*member;
+                     t.insert(name, toml::array{v.x(), v.y(), v.z()});
+                   }};
+}
+
+std::vector<ConfigKey> make_keys() {
+  using enum RunMode;
+  const auto positive = [](const Vec3& v) { return (v.array() > 0.0).all(); };
+  const auto non_negative = [](const Vec3& v) { return (v.array() >= 0.0).all(); };
+  std::vector<ConfigKey> k;
+  // [cell]: stress-controlled simple shear between rough walls (docs/model.md "The shear cell").
+  k.push_back(vec3("cell", "size", Cell, &cell, &CellConfig::size, +positive,
+                   "every length must be > 0", "> 0 each", "R",
+                   "Lx, Ly, Lz; periodic in x and y; Lz is the distance between the wall planes"));
+  k.push_back(number("cell", "phi", Cell, &cell, &CellConfig::phi, open(0.0, 0.74), "",
+                     "volume fraction of the mobile spheres between the walls' mean surfaces "
+                     "(0.74: the densest packing of spheres)"));
+  k.push_back(number("cell", "radius_min", Cell, &cell, &CellConfig::radius_min, above(0.0), "R",
+                     "radii are uniform in [radius_min, radius_max]"));
+  k.push_back(number("cell", "radius_max", Cell, &cell, &CellConfig::radius_max, Range{}, "R",
+                     "the largest radius, R = 1 in code units (>= radius_min)"));
+  k.push_back(ConfigKey{
+      "cell", "seed", Cell, "integer", "", ">= 0", "random seed of the packing and the walls",
+      [](const Section& s, Config& c, const std::filesystem::path&) {
+        std::int64_t& v = cell(c).seed;
+        v = s.integer("seed", v);
+        config_detail::check(s, "seed", v, v >= 0, "must be >= 0");
+      },
+      [](const Config& c, toml::table& t) { t.insert("seed", cell(mut(c)).seed); }});
+  k.push_back(number("cell", "shear_stress", Cell, &cell, &CellConfig::shear_stress, above(0.0),
+                     "code units", "tau, the force per area driving the top wall"));
+  k.push_back(number("cell", "wall_mass", Cell, &cell, &CellConfig::wall_mass,
+                     at_least(0.0, " (0 = automatic)"), "rho_p R^3",
+                     "mass of the top wall; 0 = the sum of its glued spheres' masses"));
+  k.push_back(number("cell", "wall_friction", Cell, &cell, &CellConfig::wall_friction,
+                     at_least(0.0), "",
+                     "Coulomb friction of particle-wall contacts (the walls are rough glued "
+                     "grains; docs/shear-cell.md)"));
+  k.push_back(number("cell", "initial_shear_rate", Cell, &cell, &CellConfig::initial_shear_rate,
+                     at_least(0.0), "sqrt(tau/rho_p)/R",
+                     "start from the linear profile v_x = rate z (the wall at rate Lz); 0 = "
+                     "from rest"));
+  // [scene]: particles from a CSV file, planes, gravity (validation and teaching).
+  k.push_back(ConfigKey{
+      "scene", "particles", Scene, "string", "", "a CSV file",
+      "required; id,x,y,z,r[,vx,vy,vz,wx,wy,wz,fixed] (io/particles_csv.hpp), relative to "
+      "the config file's folder",
+      [](const Section& s, Config& c, const std::filesystem::path& base_dir) {
+        s.require("particles", "the CSV file of particles");
+        const auto particles = s.string("particles", "");
+        config_detail::check(s, "particles", particles, !particles.empty(), "must name a CSV file");
+        // Absolute, so that the resolved config written elsewhere still points here.
+        scene(c).particles = std::filesystem::absolute(base_dir / particles).lexically_normal();
+      },
+      [](const Config& c, toml::table& t) {
+        t.insert("particles", scene(mut(c)).particles.string());
+      }});
+  k.push_back(vec3("scene", "gravity", Scene, &scene, &SceneConfig::gravity, nullptr, "", "",
+                   "length/time^2", "acceleration of gravity"));
+  k.push_back(vec3("scene", "box", Scene, &scene, &SceneConfig::box, +non_negative,
+                   "lengths must be >= 0", ">= 0 each; > 0 on periodic axes", "length",
+                   "box lengths, needed on periodic axes"));
+  k.push_back(ConfigKey{"scene", "periodic", Scene, "[bool, bool, bool]", "", "",
+                        "periodicity per axis",
+                        [](const Section& s, Config& c, const std::filesystem::path&) {
+                          scene(c).periodic = s.bool3("periodic", scene(c).periodic);
+                        },
+                        [](const Config& c, toml::table& t) {
+                          const auto& p = scene(mut(c)).periodic;
+                          t.insert("periodic", toml::array{p[0], p[1], p[2]});
+                        }});
+  k.push_back(number("scene", "trajectory_interval", Scene, &scene,
+                     &SceneConfig::trajectory_interval, above(0.0), "time",
+                     "time between frames of trajectory.csv"));
+  k.push_back(ConfigKey{
+      "scene", "planes", Scene, "[[scene.planes]] tables", "", "",
+      "infinite fixed planes, each a point = [x, y, z] and a normal = [nx, ny, nz] pointing to "
+      "the particles' side (non-zero; normalised on load)",
+      [](const Section& s, Config& c, const std::filesystem::path&) {
+        scene(c).planes = config_detail::read_planes(s);
+      },
+      [](const Config& c, toml::table& t) {
+        toml::array planes;
+        for (const auto& p : scene(mut(c)).planes)
+          planes.push_back(
+              toml::table{{"point", toml::array{p.point.x(), p.point.y(), p.point.z()}},
+                          {"normal", toml::array{p.normal.x(), p.normal.y(), p.normal.z()}}});
+        t.insert("planes", std::move(planes));
+      }});
+  // [particles]
+  k.push_back(ConfigKey{
+      "particles", "density", Any, "float", "mass/length^3", "> 0", "rho_p, the particles' density",
+      [](const Section& s, Config& c, const std::filesystem::path&) {
+        c.density = s.number("density", c.density);
+        config_detail::check(s, "density", c.density, c.density > 0.0, "must be > 0");
+      },
+      [](const Config& c, toml::table& t) { t.insert("density", c.density); }});
+  // [friction] (docs/model.md "Friction"; paper Eq. 1)
+  k.push_back(ConfigKey{
+      "friction", "law", Any, "string", "", "\"stribeck\" or \"coulomb\"",
+      "stribeck: BL or HD by the Sommerfeld number; coulomb: always mu0 (the control without "
+      "hydrodynamics)",
+      [](const Section& s, Config& c, const std::filesystem::path&) {
+        const auto law =
+            s.string("law", c.friction.law == FrictionLawKind::Coulomb ? "coulomb" : "stribeck");
+        config_detail::check(s, "law", law, law == "stribeck" || law == "coulomb",
+                             "must be \"stribeck\" or \"coulomb\"");
+        c.friction.law = law == "coulomb" ? FrictionLawKind::Coulomb : FrictionLawKind::Stribeck;
+      },
+      [](const Config& c, toml::table& t) {
+        t.insert("law", c.friction.law == FrictionLawKind::Coulomb ? "coulomb" : "stribeck");
+      }});
+  k.push_back(number("friction", "mu0", Any, &friction, &FrictionConfig::mu0, at_least(0.0), "",
+                     "boundary-lubricated friction coefficient"));
+  k.push_back(number("friction", "s_c", Any, &friction, &FrictionConfig::s_c,
+                     Range{0.0, kSommerfeldMax, false, false, "5/(6 pi) ~ 0.2653",
+                           ": the HD friction is positive only there"},
+                     "", "Sommerfeld number of the BL -> HD switch"));
+  k.push_back(number("friction", "s_lim", Any, &friction, &FrictionConfig::s_lim,
+                     Range{-kInf, kSommerfeldMax, true, true, "5/(6 pi) ~ 0.2653",
+                           ": the HD friction would be negative beyond"},
+                     "", "beyond it mu is held at mu(s_lim) (> s_c)"));
+  // [fluid]
+  k.push_back(number("fluid", "lambda", Cell, &fluid, &FluidConfig::lambda, above(0.0), "",
+                     "sqrt(tau rho_p) R / eta_f: the cell's eta_f = 1/lambda in code units"));
+  k.push_back(number("fluid", "eta_f", Scene, &fluid, &FluidConfig::eta_f, at_least(0.0),
+                     "the scene's units", "fluid viscosity (read by the Stribeck law only)"));
+  // [solver] (solver/contact_solver.hpp)
+  k.push_back(number("solver", "dt", Any, &solver, &SolverConfig::dt,
+                     at_least(0.0, " (0 = automatic)"), "time",
+                     "time step; 0 = automatic (docs/model.md)"));
+  k.push_back(number("solver", "tolerance", Any, &solver, &SolverConfig::tolerance, open(0.0, 1.0),
+                     "",
+                     "Gauss-Seidel stops when the relative change of all impulses is below it"));
+  k.push_back(integer("solver", "max_iterations", Any, &solver, &SolverConfig::max_iterations, 1,
+                      std::numeric_limits<int>::max(), "must be >= 1", ">= 1",
+                      "Gauss-Seidel sweeps per step at most"));
+  k.push_back(number("solver", "max_displacement", Cell, &solver, &SolverConfig::max_displacement,
+                     Range{0.0, 0.5, false, true, {}, {}}, "r_min",
+                     "with dt = 0: the step keeps every body's move below this fraction of r_min"));
+  k.push_back(integer("solver", "freeze_branches_after", Any, &solver,
+                      &SolverConfig::freeze_branches_after, 0, std::numeric_limits<int>::max(),
+                      "must be >= 0", ">= 0",
+                      "sweeps after which each contact keeps its friction branch"));
+  k.push_back(integer("solver", "threads", Any, &solver, &SolverConfig::threads, 0, 1024,
+                      "must be in [0, 1024] (0 = all cores)", "[0, 1024]",
+                      "threads sharing each sweep; 0 = all cores; results do not depend on it"));
+  k.push_back(number("solver", "relaxation", Any, &solver, &SolverConfig::relaxation,
+                     open(0.0, 2.0), "",
+                     "over-relaxation of the normal impulses; same converged answer, fewer "
+                     "sweeps (paper cell 229 -> 145 with coulomb 0.3); 1.6 stalls"));
+  // [run]
+  k.push_back(number("run", "strain", Cell, &run, &RunConfig::strain, at_least(0.0), "",
+                     "total strain (> transient_strain)"));
+  k.push_back(number("run", "time", Scene, &run, &RunConfig::time,
+                     Range{0.0, kInf, false, true, {}, " in scene mode"}, "time",
+                     "simulated time"));
+  k.push_back(number("run", "transient_strain", Cell, &run, &RunConfig::transient_strain,
+                     at_least(0.0), "", "strain excluded from the averages"));
+  k.push_back(number("run", "output_interval", Cell, &run, &RunConfig::output_interval, above(0.0),
+                     "", "strain between rows of timeseries.csv"));
+  k.push_back(number("run", "checkpoint_interval", Cell, &run, &RunConfig::checkpoint_interval,
+                     above(0.0), "", "strain between checkpoints"));
+  k.push_back(number("run", "snapshot_interval", Cell, &run, &RunConfig::snapshot_interval,
+                     at_least(0.0, " (0 = no ParaView snapshots)"), "",
+                     "strain between ParaView snapshots; 0 = none"));
+  return k;
+}
+
+constexpr std::string_view kSections[] = {"cell",  "scene",  "particles", "friction",
+                                          "fluid", "solver", "run"};
+
+}  // namespace
+
+std::span<const std::string_view> config_sections() { return kSections; }
+
+std::span<const ConfigKey> config_keys() {
+  static const std::vector<ConfigKey> keys = make_keys();
+  return keys;
+}
+
+const ConfigKey* find_config_key(std::string_view section, std::string_view name) {
+  for (const ConfigKey& k : config_keys())
+    if (k.section == section && k.name == name) return &k;
+  return nullptr;
+}
+
+bool is_config_section(std::string_view section) {
+  for (std::string_view s : kSections)
+    if (s == section) return true;
+  return false;
+}
+
+std::vector<std::string_view> config_key_names(std::string_view section) {
+  std::vector<std::string_view> names;
+  for (const ConfigKey& k : config_keys())
+    if (k.section == section) names.push_back(k.name);
+  return names;
+}
+
+std::string_view mode_name(RunMode mode) {
+  return mode == RunMode::Cell ? "[cell]" : mode == RunMode::Scene ? "[scene]" : "any";
+}
+
+}  // namespace dilatant
