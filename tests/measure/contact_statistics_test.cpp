@@ -1,0 +1,76 @@
+// Contact counts and the Sommerfeld histogram (measure/contact_statistics.hpp)
+// on hand-made contacts whose answer is known.
+#include "measure/contact_statistics.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace dilatant {
+namespace {
+
+Contact between(int i, int j, Regime regime, Regime previous, double s, double v = 0.0) {
+  Contact c;
+  c.i = i;
+  c.other = j;
+  c.p_n = 1.0;
+  c.p_t = Vec3(0.2, 0.0, 0.0);
+  c.regime = regime;
+  c.previous_regime = previous;
+  c.sommerfeld = s;
+  c.sliding_speed = v;
+  return c;
+}
+
+TEST(ContactCounts, CountParticleContactsByRegime) {
+  // Bodies 0-3 particles, 4 a wall sphere.
+  std::vector<BodyGroup> group(4, BodyGroup::Particle);
+  group.push_back(BodyGroup::BottomWall);
+  std::vector<Contact> c = {
+      between(0, 1, Regime::Stick, Regime::Stick, 0.0),
+      between(1, 2, Regime::BoundaryLubricated, Regime::Open, 1e-6, 2.0),   // impulsive BL
+      between(2, 3, Regime::Hydrodynamic, Regime::Hydrodynamic, 0.2, 3.0),  // beyond s_lim
+      between(0, 3, Regime::Hydrodynamic, Regime::Open, 1e-3, 1.0),         // impulsive HD
+      between(3, 4, Regime::Stick, Regime::Stick, 0.0),                     // wall: not counted
+  };
+  c.push_back(between(0, -1, Regime::Stick, Regime::Stick, 0.0));  // plane: not counted
+  Contact open = between(1, 3, Regime::Open, Regime::Open, 0.0);
+  open.p_n = 0.0;
+  c.push_back(open);
+  const double dt = 0.1;
+  const ContactCounts n = count_contacts(group, c, dt, 0.1, nullptr);
+  EXPECT_EQ(n.closed, 4.0);
+  EXPECT_EQ(n.boundary, 2.0);
+  EXPECT_EQ(n.over_s_lim, 1.0);
+  EXPECT_EQ(n.impulsive, 2.0);
+  EXPECT_EQ(n.impulsive_boundary, 1.0);
+  // |F_t| v_s with |F_t| = 0.2 / dt = 2.
+  EXPECT_NEAR(n.sliding_power_bl, 2.0 * 2.0, 1e-14);
+  EXPECT_NEAR(n.sliding_power_hd, 2.0 * 3.0 + 2.0 * 1.0, 1e-14);
+}
+
+TEST(SommerfeldHistogram, BinsByDecadeWithStickingBelowAndAbove) {
+  SommerfeldHistogram h;
+  h.add(0.0);    // sticking
+  h.add(1e-11);  // below 1e-10
+  h.add(1e3);    // above 1e2
+  h.add(1e-10);  // first bin: [1e-10, 1e-9.8)
+  h.add(3e-5);   // log10 = -4.52: bin (5.48) * 5 = 27
+  EXPECT_EQ(h.sticking, 1.0);
+  EXPECT_EQ(h.below, 1.0);
+  EXPECT_EQ(h.above, 1.0);
+  EXPECT_EQ(h.count[0], 1.0);
+  EXPECT_EQ(h.count[27], 1.0);
+  EXPECT_NEAR(SommerfeldHistogram::bin_lower_edge(0), 1e-10, 1e-24);
+  EXPECT_NEAR(SommerfeldHistogram::bin_lower_edge(5), 1e-9, 1e-23);
+  EXPECT_NEAR(SommerfeldHistogram::bin_lower_edge(SommerfeldHistogram::kBins), 1e2, 1e-12);
+  // count_contacts fills it with s, and s = 0 for sticking contacts.
+  SommerfeldHistogram g;
+  const std::vector<BodyGroup> group(2, BodyGroup::Particle);
+  count_contacts(group, {between(0, 1, Regime::Stick, Regime::Stick, 0.5)}, 0.1, 0.1, &g);
+  EXPECT_EQ(g.sticking, 1.0);
+}
+
+}  // namespace
+}  // namespace dilatant
