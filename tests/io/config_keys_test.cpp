@@ -7,6 +7,10 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <string>
+#include <vector>
+
+#include "io/io_test_files.hpp"
 
 namespace dilatant {
 namespace {
@@ -72,6 +76,42 @@ TEST(ConfigKeys, HelpListsEveryKeyWithItsDefault) {
   EXPECT_THAT(help, HasSubstr("relaxation = 1.3"));
   EXPECT_THAT(help, HasSubstr("eta_f = 0.0\n      fluid viscosity"));
   EXPECT_THAT(help, HasSubstr("([scene] only)"));
+}
+
+// A key of the other run mode is an error naming the key and where it was
+// written, never silently ignored.
+TEST(ConfigKeys, KeysOfTheOtherModeAreErrors) {
+  struct Case {
+    std::string toml;
+    std::vector<std::string> overrides;
+    std::vector<std::string> expected;
+  };
+  const std::vector<Case> cases = {
+      {"[cell]\n[fluid]\neta_f = 0.1\n",
+       {},
+       {"test.toml:3: fluid.eta_f: not a key of a [cell] run",
+        "derives eta_f = sqrt(tau rho_p) R / fluid.lambda"}},
+      {"[cell]\n", {"fluid.eta_f=0.1"}, {"--set fluid.eta_f: not a key of a [cell] run"}},
+      {"[scene]\nparticles = \"p.csv\"\n[run]\ntime = 1.0\n[fluid]\nlambda = 3.0\n",
+       {},
+       {"fluid.lambda: not a key of a [scene] run (it belongs to [cell] runs)"}},
+      {"[cell]\n[run]\ntime = 3.0\n", {}, {"run.time: not a key of a [cell] run"}},
+      {"[scene]\nparticles = \"p.csv\"\n[run]\ntime = 1.0\nstrain = 2.0\n",
+       {},
+       {"run.strain: not a key of a [scene] run"}},
+      {"[scene]\nparticles = \"p.csv\"\n[run]\ntime = 1.0\noutput_interval = 0.1\n",
+       {},
+       {"run.output_interval: not a key of a [scene] run"}},
+      {"[scene]\nparticles = \"p.csv\"\n[run]\ntime = 1.0\n",
+       {"solver.max_displacement=0.01"},
+       {"--set solver.max_displacement: not a key of a [scene] run"}},
+  };
+  for (const Case& c : cases) {
+    const std::string message =
+        test::input_error_message([&] { parse_config(c.toml, "test.toml", "/base", c.overrides); });
+    for (const auto& part : c.expected) EXPECT_THAT(message, HasSubstr(part)) << c.toml;
+    EXPECT_THAT(message, ::testing::Not(HasSubstr("\n")));
+  }
 }
 
 }  // namespace
