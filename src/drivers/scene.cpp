@@ -19,6 +19,7 @@ void StepStatistics::add(const StepReport& r) {
   iterations_total += r.solve.iterations;
   iterations_max = std::max(iterations_max, r.solve.iterations);
   residual_max = std::max(residual_max, r.solve.residual);
+  contact_residual_max = std::max(contact_residual_max, r.contact_residual.max());
   overlap_max = std::max(overlap_max, r.max_overlap);
 }
 
@@ -70,6 +71,7 @@ nlohmann::json Scene::summary(double wall_time) const {
   j["mean_iterations"] = s.steps > 0 ? double(s.iterations_total) / double(s.steps) : 0.0;
   j["max_iterations_used"] = s.iterations_max;
   j["max_residual"] = s.residual_max;
+  j["contact_residual_max"] = s.contact_residual_max;
   j["max_overlap"] = s.overlap_max;
   j["kinetic_energy"] = world_.bodies.kinetic_energy();
   long closed = 0;

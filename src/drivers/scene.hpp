@@ -20,6 +20,7 @@ struct StepStatistics {
   long iterations_total = 0;
   int iterations_max = 0;
   double residual_max = 0.0;
+  double contact_residual_max = 0.0;  // solver/contact_residual.hpp
   double overlap_max = 0.0;
 
   void add(const StepReport& r);

@@ -22,17 +22,20 @@ SceneOutcome run_scene(const Config& config, const RunOptions& options) {
   write_file_atomically(options.out_dir / "config.toml", resolved_toml(config));
   TrajectoryWriter trajectory(options.out_dir / "trajectory.csv");
   AtomicFileWriter timeseries(options.out_dir / "timeseries.csv");
-  timeseries.write("step,t,contacts,iterations,residual,converged,kinetic_energy,max_overlap\n");
+  timeseries.write(
+      "step,t,contacts,iterations,residual,converged,kinetic_energy,max_overlap,"
+      "contact_residual_normal,contact_residual_tangential\n");
 
   trajectory.write_frame(scene.world());
   double next_frame = frame_interval;
   while (!scene.done()) {
     const StepReport& r = scene.step();
     const double t = scene.world().time;
-    timeseries.write(fmt::format("{},{:.10g},{},{},{:.3e},{},{:.10g},{:.3e}\n",
+    timeseries.write(fmt::format("{},{:.10g},{},{},{:.3e},{},{:.10g},{:.3e},{:.3e},{:.3e}\n",
                                  scene.statistics().steps, t, r.contacts_closed, r.solve.iterations,
                                  r.solve.residual, r.solve.converged ? 1 : 0, r.kinetic_energy,
-                                 r.max_overlap));
+                                 r.max_overlap, r.contact_residual.normal_max,
+                                 r.contact_residual.tangential_max));
     // Frames fall on the first step at or past each multiple of the interval.
     if (t >= next_frame - 1e-9 * dt) {
       trajectory.write_frame(scene.world());

@@ -180,6 +180,9 @@ void ShearCell::accumulate(const StepReport& report) {
   a.work_hd += report.contact_work.tangential_hd;
   a.iterations += report.solve.iterations;
   a.max_residual = std::max(a.max_residual, report.solve.residual);
+  const ContactResidual& r = report.contact_residual;
+  a.contact_residual_max = std::max(a.contact_residual_max, r.max());
+  a.contact_residual_rms += std::hypot(r.normal_rms, r.tangential_rms);
   a.steps += 1.0;
   a.unconverged += report.solve.converged ? 0.0 : 1.0;
   a.max_overlap = std::max(a.max_overlap, report.max_overlap);

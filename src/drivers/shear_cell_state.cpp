@@ -11,7 +11,8 @@ namespace dilatant {
 
 namespace {
 
-constexpr std::uint64_t kMagic = 0x32544e54414c4944ULL;  // "DILATNT2": contact memory with regime
+// "DILATNT3": time-series rows with the contact residual (2: contact memory with regime)
+constexpr std::uint64_t kMagic = 0x33544e54414c4944ULL;
 
 // One function serves both directions so the field order cannot diverge.
 template <class Archive, class State>

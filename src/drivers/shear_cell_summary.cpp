@@ -44,10 +44,13 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   const auto p_kinetic =
       steady_average(s.rows, from, [](const FlowRow& r) { return r.power_kinetic; });
   double unconverged = 0.0, iterations = 0.0, steps = 0.0;
+  double residual_max = 0.0, residual_rms = 0.0;
   for (const FlowRow& r : s.rows) {
     unconverged += r.unconverged_steps;
     iterations += r.mean_iterations * r.steps;
     steps += r.steps;
+    residual_max = std::max(residual_max, r.contact_residual_max);
+    residual_rms += r.contact_residual_rms * r.steps;
   }
 
   const double gdot_code = rheology.shear_rate;
@@ -144,6 +147,11 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   j["steps"] = s.steps;
   j["mean_iterations"] = steps > 0.0 ? iterations / steps : 0.0;
   j["frac_steps_unconverged"] = steps > 0.0 ? unconverged / steps : 0.0;
+  // The residual of the contact problem itself (solver/contact_residual.hpp):
+  // the worst contact of any step, and the step-mean of the RMS over contacts,
+  // relative to the typical contact impulse.
+  j["contact_residual_max"] = residual_max;
+  j["contact_residual_rms"] = steps > 0.0 ? residual_rms / steps : 0.0;
   j["steady_samples"] = v.samples;
   j["wall_time_s"] = cost.wall_s;
   // The cost of this invocation (bench/ reads these; see measure/run_cost.hpp).

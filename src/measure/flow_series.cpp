@@ -6,16 +6,17 @@ namespace dilatant {
 
 std::string flow_csv_header() {
   return "t,strain,wall_velocity,gamma_dot,kinetic_energy,contacts,frac_bl,frac_over_slim,"
-         "normal_stress,bottom_force_x,iterations,residual,dt,steps,unconverged_steps\n";
+         "normal_stress,bottom_force_x,iterations,residual,dt,steps,unconverged_steps,"
+         "contact_residual_max,contact_residual_rms\n";
 }
 
 std::string flow_csv_row(const FlowRow& r, double lz) {
   return fmt::format(
       "{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.6g},{:.6g},{:.6g},{:.8g},{:.8g},{:.4g},"
-      "{:.3e},{:.4g},{},{}\n",
+      "{:.3e},{:.4g},{},{},{:.3e},{:.3e}\n",
       r.t, r.strain, r.wall_velocity, r.wall_velocity / lz, r.kinetic_energy, r.contacts, r.frac_bl,
       r.frac_over_slim, r.normal_stress, r.bottom_force_x, r.mean_iterations, r.max_residual,
-      r.mean_dt, r.steps, r.unconverged_steps);
+      r.mean_dt, r.steps, r.unconverged_steps, r.contact_residual_max, r.contact_residual_rms);
 }
 
 FlowRow IntervalSums::close(double t, double strain) const {
@@ -48,6 +49,8 @@ FlowRow IntervalSums::close(double t, double strain) const {
   r.mean_dt = time / steps;
   r.steps = steps;
   r.unconverged_steps = unconverged;
+  r.contact_residual_max = contact_residual_max;
+  r.contact_residual_rms = contact_residual_rms / steps;
   r.max_overlap = max_overlap;
   return r;
 }

@@ -26,6 +26,10 @@ struct FlowRow {
   double sliding_bl = 0.0, sliding_hd = 0.0;  // sum |F_t| v_s at particle contacts
   double mean_iterations = 0.0, max_residual = 0.0, mean_dt = 0.0, steps = 0.0;
   double unconverged_steps = 0.0;
+  // Residual of the contact problem at the end of the steps (solver/contact_residual.hpp),
+  // relative to the typical contact impulse: the largest of any contact in any
+  // step of the interval, and the step-mean of the RMS over contacts.
+  double contact_residual_max = 0.0, contact_residual_rms = 0.0;
   double phi_bulk = 0.0;     // central half of the gap, at the end of the interval
   double max_overlap = 0.0;  // largest overlap at the end of any step of the interval
   // Powers: drive, contact work by kind (< 0: dissipation; solver/contact_work.hpp),
@@ -45,6 +49,7 @@ struct IntervalSums {
   double normal_stress = 0.0, bottom_force_x = 0.0, top_force_z = 0.0, bottom_force_z = 0.0;
   double sliding_bl = 0.0, sliding_hd = 0.0;
   double iterations = 0.0, max_residual = 0.0, steps = 0.0, unconverged = 0.0;
+  double contact_residual_max = 0.0, contact_residual_rms = 0.0;  // max; sum over steps
   double max_overlap = 0.0;
   double work_drive = 0.0, work_normal = 0.0, work_bl = 0.0, work_hd = 0.0;
   double kinetic_start = 0.0, kinetic_end = 0.0;  // total, particles and wall

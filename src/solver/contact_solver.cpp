@@ -9,57 +9,17 @@ namespace dilatant {
 
 namespace {
 
-// Applies impulse dp to i and -dp to the partner, at their contact points.
-inline void apply_impulse(const Contact& c, const Vec3& dp, Bodies& b) {
-  const Vec3 n_x_dp = c.normal.cross(dp);
-  b.velocity[c.i] += b.inv_mass[c.i] * dp;
-  b.angular_velocity[c.i] -= (b.inv_inertia[c.i] * c.arm_i) * n_x_dp;
-  if (!c.with_plane()) {
-    b.velocity[c.other] -= b.inv_mass[c.other] * dp;
-    b.angular_velocity[c.other] -= (b.inv_inertia[c.other] * c.arm_j) * n_x_dp;
-  }
-}
-
-// The branch imposed on a contact: once branches are frozen, the one it took in
-// the last sweep; before, the HD branch if it slid on it in the previous step.
-inline FrictionBranch imposed_branch(const Contact& c, bool frozen) {
-  if (!frozen) {
-    return c.previous_regime == Regime::Hydrodynamic ? FrictionBranch::KeepHydrodynamic
-                                                     : FrictionBranch::Any;
-  }
-  switch (c.regime) {
-    case Regime::Stick:
-    case Regime::BoundaryLubricated:
-      return FrictionBranch::Boundary;
-    case Regime::Hydrodynamic:
-      return FrictionBranch::Hydrodynamic;
-    case Regime::Open:
-      break;
-  }
-  return FrictionBranch::Any;
-}
-
 template <class Law>
 SweepChange sweep(std::span<Contact> contacts, Bodies& b, const Law& law, double dt,
                   double relaxation, bool freeze_branches) {
   SweepChange change;
   const double inv_dt = 1.0 / dt;
   for (Contact& c : contacts) {
-    const Vec3 u = relative_velocity(c, b);
-    const double u_n = u.dot(c.normal);
-    // Free velocities: remove this contact's own current impulse.
-    const double u_n_free = u_n - c.w_n * c.p_n;
-    const Vec3 u_t_free = (u - u_n * c.normal) - c.w_t * c.p_t;
-
-    // Over-relaxed normal impulse (SOR); the fixed point is Gauss–Seidel's.
-    const double p_n_exact = std::max(0.0, -(u_n_free + c.gap * inv_dt) / c.w_n);
-    const double p_n = std::max(0.0, c.p_n + relaxation * (p_n_exact - c.p_n));
-    const double free_slip = u_t_free.norm();
-    const TangentialSolution t =
-        law.solve(TangentialProblem{free_slip, c.w_t, p_n, dt, c.reduced_radius,
-                                    imposed_branch(c, freeze_branches), c.sliding_speed});
-    const Vec3 p_t = free_slip > 0.0 ? Vec3((-t.impulse / free_slip) * u_t_free) : Vec3::Zero();
-
+    const LocalAnswer a =
+        solve_local(c, b, law, dt, inv_dt, relaxation, imposed_branch(c, freeze_branches));
+    const double p_n = a.p_n;
+    const Vec3& p_t = a.p_t;
+    const TangentialSolution& t = a.tangential;
     const Vec3 dp = (p_n - c.p_n) * c.normal + (p_t - c.p_t);
     apply_impulse(c, dp, b);
     c.p_n = p_n;

@@ -67,6 +67,7 @@
 #include "boundary/boundary.hpp"
 #include "detection/contact.hpp"
 #include "friction/friction_law.hpp"
+#include "solver/local_problem.hpp"
 #include "solver/slab_partition.hpp"
 #include "world/bodies.hpp"
 
@@ -93,15 +94,6 @@ struct SolveReport {
   double residual = 0.0;
   bool converged = true;
 };
-
-// Relative velocity of i's surface w.r.t. the partner's at the contact point.
-inline Vec3 relative_velocity(const Contact& c, const Bodies& b) {
-  Vec3 u = b.velocity[c.i] - c.arm_i * b.angular_velocity[c.i].cross(c.normal);
-  if (!c.with_plane()) {
-    u -= b.velocity[c.other] + c.arm_j * b.angular_velocity[c.other].cross(c.normal);
-  }
-  return u;
-}
 
 // Sums accumulated over one sweep, from which the residual follows.
 struct SweepChange {

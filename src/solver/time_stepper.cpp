@@ -91,6 +91,8 @@ StepReport TimeStepper::step(World& world, Boundary* boundary) {
                                  .boundary = boundary,
                                  .dt = dt_},
                                 settings_);
+  report.contact_residual = contact_residual(
+      contacts_, slabs_, b, law_, boundary != nullptr ? boundary->contact_law() : law_, dt_);
   implicit_drag_.restore_masses(b);
 
   const auto solve_end = Clock::now();

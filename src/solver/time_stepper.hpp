@@ -7,7 +7,8 @@
 //   2. detect     contacts whose gap may close within the step (cell list)
 //   3. warm start impulses of contacts that existed last step
 //   4. solve      nonlinear Gauss–Seidel until the impulses converge, the
-//                 boundary's block solved after every sweep
+//                 boundary's block solved after every sweep; then the residual
+//                 of the contact problem (solver/contact_residual.hpp)
 //   5. store      impulses for the next step's warm start
 //   6. integrate  x += dt v   with the end-of-step velocities (implicit)
 //
@@ -23,6 +24,7 @@
 #include "fluid/fluid_forces.hpp"
 #include "fluid/implicit_drag.hpp"
 #include "friction/friction_law.hpp"
+#include "solver/contact_residual.hpp"
 #include "solver/contact_solver.hpp"
 #include "solver/contact_work.hpp"
 #include "world/world.hpp"
@@ -31,6 +33,7 @@ namespace dilatant {
 
 struct StepReport {
   SolveReport solve;
+  ContactResidual contact_residual;  // of the impulses the solve ended with
   std::size_t contacts_detected = 0;
   std::size_t contacts_closed = 0;   // contacts carrying a normal impulse
   double kinetic_energy_free = 0.0;  // after prediction, before contacts act

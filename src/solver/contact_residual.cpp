@@ -1,0 +1,71 @@
+#include "solver/contact_residual.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+#include "solver/local_problem.hpp"
+
+namespace dilatant {
+
+namespace {
+
+struct Sums {
+  double normal_max = 0.0, normal_squared = 0.0;
+  double tangential_max = 0.0, tangential_squared = 0.0;
+  double impulse_squared = 0.0;
+  double loaded = 0.0;
+};
+
+template <class Law>
+void add_range(std::span<const Contact> contacts, const Bodies& b, const Law& law, double dt,
+               Sums& s) {
+  const double inv_dt = 1.0 / dt;
+  for (const Contact& c : contacts) {
+    const LocalAnswer a = solve_local(c, b, law, dt, inv_dt, 1.0, imposed_branch(c, true));
+    const double dn = std::abs(a.p_n - c.p_n);
+    const double dt_ = (a.p_t - c.p_t).norm();
+    s.normal_max = std::max(s.normal_max, dn);
+    s.tangential_max = std::max(s.tangential_max, dt_);
+    s.normal_squared += dn * dn;
+    s.tangential_squared += dt_ * dt_;
+    if (c.p_n > 0.0) {
+      s.impulse_squared += c.p_n * c.p_n + c.p_t.squaredNorm();
+      s.loaded += 1.0;
+    }
+  }
+}
+
+}  // namespace
+
+ContactResidual contact_residual(const std::vector<Contact>& contacts, const SlabPartition& slabs,
+                                 const Bodies& bodies, const FrictionLaw& law,
+                                 const FrictionLaw& boundary_law, double dt) {
+  Sums s;
+  for (int k = 0; k < slabs.count(); ++k) {
+    const auto ks = static_cast<std::size_t>(k);
+    const std::span<const Contact> particles(contacts.data() + slabs.begin[ks],
+                                             slabs.boundary_begin[ks] - slabs.begin[ks]);
+    const std::span<const Contact> boundary(contacts.data() + slabs.boundary_begin[ks],
+                                            slabs.begin[ks + 1] - slabs.boundary_begin[ks]);
+    std::visit([&](const auto& l) { add_range(particles, bodies, l, dt, s); }, law);
+    std::visit([&](const auto& l) { add_range(boundary, bodies, l, dt, s); }, boundary_law);
+  }
+  ContactResidual r;
+  if (contacts.empty()) return r;
+  // No loaded contact: any change is measured against the changes themselves.
+  const double typical = s.loaded > 0.0 ? std::sqrt(s.impulse_squared / s.loaded) : 0.0;
+  if (typical <= 0.0) {
+    const bool moved = s.normal_max > 0.0 || s.tangential_max > 0.0;
+    r.normal_max = r.tangential_max = r.normal_rms = r.tangential_rms = moved ? 1.0 : 0.0;
+    return r;
+  }
+  const double n = static_cast<double>(contacts.size());
+  r.normal_max = s.normal_max / typical;
+  r.tangential_max = s.tangential_max / typical;
+  r.normal_rms = std::sqrt(s.normal_squared / n) / typical;
+  r.tangential_rms = std::sqrt(s.tangential_squared / n) / typical;
+  return r;
+}
+
+}  // namespace dilatant

@@ -1,0 +1,44 @@
+#pragma once
+// How far the impulses of a step are from solving its contact problem — not
+// how much they changed in the last sweep, which can be small while the
+// iteration still crawls (a jammed packing creeps that way).
+//
+// For each contact c, let P_c* = (p_n*, p_t*) be the exact solution of its local
+// problem with every other contact frozen at its current impulse
+// (solver/local_problem.hpp; the friction branch is the one the contact is on:
+// stick/BL on the mu0 cone, HD on the lubrication curve). P solves the whole
+// problem if and only if P_c = P_c* for every c (the natural-map residual of the
+// complementarity problem, Jean 1999; Acary & Brogliato 2008, ch. 13). Its parts:
+//
+//   normal      |p_n* - p_n|: the violation of non-penetration and of
+//               complementarity, an approach speed |u_n + g/dt| times 1/w_n;
+//   tangential  |p_t* - p_t|: the violation of the cone (stick) or of the
+//               friction law (|P_t| = mu(s) p_n opposite the slip).
+//
+// Each is reported as a maximum and an RMS over the contacts, relative to the
+// RMS impulse of the loaded contacts, sqrt(sum |P_c|^2 / n_loaded): a residual
+// of 1e-3 means the worst contact is off by 0.1% of a typical contact impulse.
+// The solver's stopping test is still the relative change of one sweep
+// (solver/contact_solver.hpp); this is what that test buys.
+#include <vector>
+
+#include "friction/friction_law.hpp"
+#include "solver/slab_partition.hpp"
+#include "world/bodies.hpp"
+
+namespace dilatant {
+
+struct ContactResidual {
+  double normal_max = 0.0, normal_rms = 0.0;
+  double tangential_max = 0.0, tangential_rms = 0.0;
+  double max() const { return normal_max > tangential_max ? normal_max : tangential_max; }
+};
+
+// The residual of the current impulses of `contacts` (ordered by `slabs`: the
+// contacts of each slab's boundary range obey `boundary_law`), reading the
+// bodies' current velocities. Reads only.
+ContactResidual contact_residual(const std::vector<Contact>& contacts, const SlabPartition& slabs,
+                                 const Bodies& bodies, const FrictionLaw& law,
+                                 const FrictionLaw& boundary_law, double dt);
+
+}  // namespace dilatant
