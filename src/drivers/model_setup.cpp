@@ -21,7 +21,8 @@ SolverSettings make_solver_settings(const SolverConfig& s) {
                         .max_iterations = s.max_iterations,
                         .freeze_branches_after = s.freeze_branches_after,
                         .threads = s.threads > 0 ? s.threads : cores,
-                        .relaxation = s.relaxation};
+                        .relaxation = s.relaxation,
+                        .acceleration = s.acceleration};
 }
 
 }  // namespace dilatant

@@ -80,6 +80,7 @@ struct SolverConfig {
   int freeze_branches_after = SolverSettings{}.freeze_branches_after;
   int threads = SolverSettings{}.threads;  // 0 => all cores (solver/slab_partition.hpp)
   double relaxation = SolverSettings::kRunRelaxation;
+  Acceleration acceleration = SolverSettings{}.acceleration;
 };
 
 struct RunConfig {

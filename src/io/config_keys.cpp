@@ -261,6 +261,22 @@ std::vector<ConfigKey> make_keys() {
                      open(0.0, 2.0), "",
                      "over-relaxation of the normal impulses; same converged answer, fewer "
                      "sweeps (paper cell 229 -> 145 with coulomb 0.3); 1.6 stalls"));
+  k.push_back(ConfigKey{
+      "solver", "acceleration", Any, "string", "", "\"none\" or \"cg\"",
+      "none: projected Gauss-Seidel sweeps; cg: the nonsmooth nonlinear conjugate gradient "
+      "on top of them (Silcowitz et al. 2010; same answer)",
+      [](const Section& s, Config& c, const std::filesystem::path&) {
+        const auto a =
+            s.string("acceleration",
+                     c.solver.acceleration == Acceleration::ConjugateGradient ? "cg" : "none");
+        config_detail::check(s, "acceleration", a, a == "none" || a == "cg",
+                             "must be \"none\" or \"cg\"");
+        c.solver.acceleration = a == "cg" ? Acceleration::ConjugateGradient : Acceleration::None;
+      },
+      [](const Config& c, toml::table& t) {
+        t.insert("acceleration",
+                 c.solver.acceleration == Acceleration::ConjugateGradient ? "cg" : "none");
+      }});
   // [run]
   k.push_back(number("run", "strain", Cell, &run, &RunConfig::strain, at_least(0.0), "",
                      "total strain (> transient_strain)"));

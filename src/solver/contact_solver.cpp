@@ -11,7 +11,7 @@ namespace {
 
 template <class Law>
 SweepChange sweep(std::span<Contact> contacts, Bodies& b, const Law& law, double dt,
-                  double relaxation, bool freeze_branches) {
+                  double relaxation, bool freeze_branches, Vec3* changes) {
   SweepChange change;
   const double inv_dt = 1.0 / dt;
   for (Contact& c : contacts) {
@@ -22,6 +22,7 @@ SweepChange sweep(std::span<Contact> contacts, Bodies& b, const Law& law, double
     const TangentialSolution& t = a.tangential;
     const Vec3 dp = (p_n - c.p_n) * c.normal + (p_t - c.p_t);
     apply_impulse(c, dp, b);
+    if (changes != nullptr) changes[&c - contacts.data()] = dp;
     c.p_n = p_n;
     c.p_t = p_t;
     c.sliding_speed = t.sliding_speed;
@@ -57,10 +58,33 @@ double round_off_floor_squared(const std::vector<Contact>& contacts, const Bodie
 
 SweepChange sweep_range(std::vector<Contact>& contacts, std::size_t begin, std::size_t end,
                         Bodies& bodies, const FrictionLaw& law, double dt, double relaxation,
-                        bool freeze) {
+                        bool freeze, std::vector<Vec3>* changes = nullptr) {
   std::span<Contact> part(contacts.data() + begin, end - begin);
-  return std::visit([&](const auto& l) { return sweep(part, bodies, l, dt, relaxation, freeze); },
-                    law);
+  Vec3* out = changes != nullptr ? changes->data() + begin : nullptr;
+  return std::visit(
+      [&](const auto& l) { return sweep(part, bodies, l, dt, relaxation, freeze, out); }, law);
+}
+
+// The conjugate-gradient step of the nonsmooth nonlinear CG method (see the
+// header): with r the change of the sweep just done and beta = |r|^2 / |r_prev|^2,
+// move every impulse on along the previous direction by beta d, then
+// d <- beta d + r. beta > 1 (the sweep went uphill) restarts: d <- r.
+void conjugate_gradient_step(std::vector<Contact>& contacts, Bodies& bodies,
+                             const std::vector<Vec3>& changes, std::vector<Vec3>& direction,
+                             double beta) {
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    Contact& c = contacts[k];
+    if (beta > 0.0) {
+      const Vec3 step = beta * direction[k];
+      const double step_n = step.dot(c.normal);
+      c.p_n += step_n;
+      c.p_t += step - step_n * c.normal;
+      apply_impulse(c, step, bodies);
+      direction[k] = step + changes[k];
+    } else {
+      direction[k] = changes[k];
+    }
+  }
 }
 
 }  // namespace
@@ -101,13 +125,21 @@ SolveReport solve_contacts(const ContactProblem& problem, const SolverSettings& 
   // sweep may already write the next sweep's sums while another still reads.
   std::vector<SweepChange> partial(2 * static_cast<std::size_t>(n));
   const double omega = settings.relaxation;
+  const bool accelerate = settings.acceleration == Acceleration::ConjugateGradient;
+  std::vector<Vec3> changes, direction;
+  if (accelerate) {
+    changes.assign(contacts.size(), Vec3::Zero());
+    direction.assign(contacts.size(), Vec3::Zero());
+  }
+  double change_before = 0.0;  // |r|^2 of the previous sweep
   const auto sweep_slab = [&](int k, int sweep, bool freeze) {
     const auto ks = static_cast<std::size_t>(k);
+    std::vector<Vec3>* out = accelerate ? &changes : nullptr;
     SweepChange ch = sweep_range(contacts, slabs.begin[ks], slabs.boundary_begin[ks], bodies, law,
-                                 dt, omega, freeze);
+                                 dt, omega, freeze, out);
     const SweepChange ch_boundary =
         sweep_range(contacts, slabs.boundary_begin[ks], slabs.begin[ks + 1], bodies, boundary_law,
-                    dt, omega, freeze);
+                    dt, omega, freeze, out);
     partial[static_cast<std::size_t>((sweep & 1) * n + k)] = {
         ch.change_squared + ch_boundary.change_squared,
         ch.impulse_squared + ch_boundary.impulse_squared};
@@ -146,6 +178,20 @@ SolveReport solve_contacts(const ContactProblem& problem, const SolverSettings& 
         report.converged = residual <= settings.tolerance;
       }
       if (residual <= settings.tolerance) break;
+      if (accelerate) {
+        // Serial, and behind barriers: the step touches every contact's bodies.
+#pragma omp barrier
+#pragma omp single
+        {
+          double change = 0.0;
+          for (int k = 0; k < n; ++k)
+            change += partial[static_cast<std::size_t>((sweep & 1) * n + k)].change_squared;
+          const double beta = sweep > 0 && change_before > 0.0 ? change / change_before : 2.0;
+          conjugate_gradient_step(contacts, bodies, changes, direction, beta <= 1.0 ? beta : 0.0);
+          change_before = change;
+          if (boundary != nullptr) boundary->solve_block(contacts, bodies);
+        }
+      }
     }
   }
   return report;

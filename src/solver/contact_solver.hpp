@@ -73,6 +73,15 @@
 
 namespace dilatant {
 
+// How the sweeps are accelerated (docs/model.md "Convergence"): none (plain
+// projected Gauss–Seidel), or the nonsmooth nonlinear conjugate gradient of
+// Silcowitz, Niebe & Erleben (2010, Vis. Comput. 26, 893): each sweep's change
+// r of the impulses is taken as the (negative) gradient of a Fletcher–Reeves
+// step, x <- x + beta d, d <- beta d + r, beta = |r|^2/|r_prev|^2, restarting
+// (d <- r) when beta > 1. At the fixed point r = 0, so the answer is the
+// Gauss–Seidel answer: the acceleration changes the path, never the solution.
+enum class Acceleration : std::uint8_t { None, ConjugateGradient };
+
 struct SolverSettings {
   double tolerance = 1e-6;  // on the relative impulse change of one sweep
   int max_iterations = 1000;
@@ -83,6 +92,7 @@ struct SolverSettings {
   // one sweep: the closed-form tests rely on it); the fixed point does not
   // depend on omega.
   double relaxation = 1.0;
+  Acceleration acceleration = Acceleration::None;
   // What runs use unless solver.relaxation says otherwise: the same answer in
   // fewer sweeps (paper cell: 229 -> 145 with coulomb 0.3, 92 -> 74 with
   // stribeck at lambda 100); 1.6 stalls (bench/RESULTS.md).

@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# What the solver's stopping tolerance buys: the same points run at several
+# solver.tolerance values, each reporting the sweeps per step, the residual of
+# the contact problem it leaves (solver/contact_residual.hpp) and the physics
+# (eta, P_BL, jammed). Writes bench/results/tolerance-LABEL/<point>-<tol>/ and
+# prints a markdown table (python3 bench/report_tolerance.py DIR reprints it).
+#
+#   bash bench/tolerance_study.sh [--label L] [--binary PATH] [--jobs N]
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+label=$(date +%Y%m%d) binary=build/dilatant jobs=2
+while (($# > 0)); do
+  case "$1" in
+    --label) label=$2; shift 2 ;;
+    --binary) binary=$2; shift 2 ;;
+    --jobs) jobs=$2; shift 2 ;;
+    *) echo "usage: $0 [--label L] [--binary PATH] [--jobs N]" >&2; exit 2 ;;
+  esac
+done
+out=bench/results/tolerance-$label
+mkdir -p "$out"
+
+# The small-cell points of the solver issue (10 x 6 x 12 R, ~120 spheres).
+small=(--set 'cell.size=[10.0, 6.0, 12.0]' --set run.strain=3.0 --set run.transient_strain=1.0
+  --set run.snapshot_interval=0 --set solver.threads=1 --set solver.max_iterations=1000)
+declare -A points=(
+  [stribeck-mu0.3-lambda30]="--set friction.mu0=0.3 --set fluid.lambda=30"
+  [stribeck-mu0.1-lambda100]="--set friction.mu0=0.1 --set fluid.lambda=100"
+  [coulomb0.3-phi0.59]="--set friction.law=coulomb --set friction.mu0=0.3 --set cell.phi=0.59"
+)
+runs=()
+for p in "${!points[@]}"; do
+  for tol in 1e-3 1e-4 1e-5 1e-6; do runs+=("$p $tol"); done
+done
+run_one() {
+  local p=${1% *} tol=${1#* }
+  # shellcheck disable=SC2086
+  "$binary" run "${small[@]}" ${points[$p]} --set solver.tolerance="$tol" \
+    --out "$out/$p-$tol" -q 2>/dev/null || true
+}
+export -f run_one
+for r in "${runs[@]}"; do
+  while (($(jobs -rp | wc -l) >= jobs)); do sleep 1; done
+  run_one "$r" &
+done
+wait
+python3 - "$out" <<'PY'
+import json, pathlib, sys
+rows = []
+for d in sorted(pathlib.Path(sys.argv[1]).iterdir()):
+    f = d / "summary.json"
+    if not f.exists():
+        continue
+    s = json.loads(f.read_text())
+    point, tol = d.name.rsplit("-", 1)
+    rows.append((point, float(tol), s))
+print("| point | tolerance | sweeps / step | unconverged | residual max | residual rms | eta | P_BL | wall s / strain |")
+print("|---|---|---|---|---|---|---|---|---|")
+for point, tol, s in sorted(rows, key=lambda r: (r[0], -r[1])):
+    eta = "jammed" if s["jammed"] else f"{s['eta']:.4g} ± {s['eta_err']:.2g}"
+    print(f"| {point} | {tol:.0e} | {s['mean_iterations']:.0f} | {s['frac_steps_unconverged']:.1%} | "
+          f"{s['contact_residual_max']:.1e} | {s['contact_residual_rms']:.1e} | {eta} | "
+          f"{s['frac_bl']:.3f} ± {s['frac_bl_err']:.3f} | {s['wall_time_per_strain_s']:.1f} |")
+PY
