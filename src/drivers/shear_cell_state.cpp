@@ -1,5 +1,7 @@
 #include "drivers/shear_cell_state.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <fstream>
 #include <sstream>
@@ -91,6 +93,13 @@ ShearCellState load_checkpoint(const std::filesystem::path& file) {
   BinaryReader r(content.str());
   std::uint64_t magic = 0;
   r.value(magic);
+  // "DILATNT" and a format digit: an older format is named as such.
+  constexpr std::uint64_t kFormatMask = 0x00ffffffffffffffULL;
+  if (magic != kMagic && (magic & kFormatMask) == (kMagic & kFormatMask))
+    throw std::runtime_error(fmt::format(
+        "{}: checkpoint of an older dilatant (format {}; this version reads format {}): run "
+        "this point anew without --resume",
+        file.string(), static_cast<char>(magic >> 56), static_cast<char>(kMagic >> 56)));
   if (magic != kMagic) throw std::runtime_error(file.string() + ": not a dilatant checkpoint");
   ShearCellState s;
   visit_state(r, s);

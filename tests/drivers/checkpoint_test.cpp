@@ -1,0 +1,65 @@
+// Checkpoints (drivers/shear_cell_state.hpp): read back exactly, and a file of
+// another format is refused with a message that says what it is.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+#include "drivers/shear_cell.hpp"
+
+namespace dilatant {
+namespace {
+
+std::filesystem::path tiny_checkpoint(const std::string& name) {
+  const auto file = std::filesystem::temp_directory_path() /
+                    ("dilatant_checkpoint_" + name + "_" + std::to_string(::getpid()) + ".bin");
+  ShearCell cell(default_cell_config(
+      {"cell.size=[6.0, 5.0, 7.0]", "run.strain=0.01", "run.transient_strain=0"}));
+  cell.step();
+  cell.write_checkpoint(file);
+  return file;
+}
+
+std::string message_of(const std::filesystem::path& file) {
+  try {
+    load_checkpoint(file);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Checkpoint, ReadsBackTheStateItWrote) {
+  const auto file = tiny_checkpoint("same");
+  const ShearCellState s = load_checkpoint(file);
+  EXPECT_EQ(s.steps, 1);
+  EXPECT_GT(s.world.bodies.size(), 0u);
+  EXPECT_EQ(s.walls.groups().size(), s.world.bodies.size());
+  std::filesystem::remove(file);
+}
+
+TEST(Checkpoint, AnOlderFormatIsNamedAsSuch) {
+  const auto file = tiny_checkpoint("old");
+  {
+    std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(7);
+    f.put('2');  // "DILATNT2": the format before the residual columns
+  }
+  EXPECT_NE(message_of(file).find("checkpoint of an older dilatant (format 2; this version reads "
+                                  "format 3)"),
+            std::string::npos)
+      << message_of(file);
+  {
+    std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(0);
+    f.put('X');
+  }
+  EXPECT_NE(message_of(file).find("not a dilatant checkpoint"), std::string::npos);
+  std::filesystem::remove(file);
+}
+
+}  // namespace
+}  // namespace dilatant
