@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# Does a jammed packing creep because the solver stops early? A packing above
+# its jamming fraction under a stress it can hold is run at several solver
+# tolerances, with the default sweeps ("sor") and the conjugate-gradient
+# acceleration ("cg"); for each: when the jam rule fired (drivers/shear_cell.hpp:
+# less than 1e-4 strain in 50 time units), the strain crept before, and the
+# creep rate over the last output rows. Writes bench/results/jam-LABEL/ (the
+# summaries and time series) and prints a markdown table.
+#
+#   bash bench/jam_creep.sh [--label L] [--binary PATH] [--jobs N] [--report-only]
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+label=$(date +%Y%m%d) binary=build/dilatant jobs=2 report_only=0
+while (($# > 0)); do
+  case "$1" in
+    --label) label=$2; shift 2 ;;
+    --binary) binary=$2; shift 2 ;;
+    --jobs) jobs=$2; shift 2 ;;
+    --report-only) report_only=1; shift ;;
+    *) echo "usage: $0 [--label L] [--binary PATH] [--jobs N] [--report-only]" >&2; exit 2 ;;
+  esac
+done
+out=bench/results/jam-$label
+mkdir -p "$out"
+
+# 15 x 10 x 18 R (~470 spheres), coulomb mu0 1.0 at phi 0.60: jams (issue 14's measurement).
+cell=(--set 'cell.size=[15.0, 10.0, 18.0]' --set cell.phi=0.60 --set friction.law=coulomb
+  --set friction.mu0=1.0 --set run.strain=2 --set run.transient_strain=0.5
+  --set run.snapshot_interval=0 --set run.output_interval=0.0005 --set solver.threads=1)
+declare -A methods=(
+  [sor]="--set solver.acceleration=none --set solver.relaxation=1.3"
+  [cg]="--set solver.acceleration=cg --set solver.relaxation=1.0"
+)
+runs=()
+if ((!report_only)); then
+  for m in sor cg; do for tol in 1e-3 1e-4 1e-5; do runs+=("$m $tol"); done; done
+fi
+for r in "${runs[@]}"; do
+  while (($(jobs -rp | wc -l) >= jobs)); do sleep 1; done
+  read -r m tol <<<"$r"
+  # shellcheck disable=SC2086
+  nice "$binary" run "${cell[@]}" ${methods[$m]} --set solver.tolerance="$tol" \
+    --out "$out/$m-$tol" -q 2>/dev/null &
+done
+wait
+find "$out" -type f ! -name summary.json ! -name config.toml ! -name timeseries.csv -delete
+python3 - "$out" <<'PY'
+import csv, json, pathlib, re, sys
+print("| method | tolerance | jammed at t | strain crept | creep rate, t 10 to jam - 50 | sweeps / step | steps at the cap | residual max | wall s |")
+print("|---|---|---|---|---|---|---|---|---|")
+rows = []
+for d in sorted(pathlib.Path(sys.argv[1]).iterdir()):
+    if not (d / "summary.json").exists():
+        continue
+    m, tol = re.fullmatch(r"(sor|cg)-(.*)", d.name).groups()
+    s = json.loads((d / "summary.json").read_text())
+    series = list(csv.DictReader(open(d / "timeseries.csv")))
+    # Creep before the jam was declared: from t = 10 (after the first
+    # compaction) to the start of the last 50-time-unit window (which the rule
+    # judged to be still), by the rows nearest those times.
+    t_end = float(series[-1]["t"])
+    def at(t):
+        return min(series, key=lambda r: abs(float(r["t"]) - t))
+    a, b = at(10.0), at(t_end - 50.0)
+    dt = float(b["t"]) - float(a["t"])
+    rate = (float(b["strain"]) - float(a["strain"])) / dt if dt > 5.0 else None
+    rows.append((m, float(tol), s, rate))
+for m, tol, s, rate in sorted(rows, key=lambda r: (r[0] != "sor", -r[1])):
+    creep = "< 5e-4 strain in all" if rate is None else f"{rate:.1e}"
+    print(f"| {m} | {tol:.0e} | {s['time']:.0f} | {s['strain']:.4f} | {creep} | "
+          f"{s['mean_iterations']:.0f} | {s['frac_steps_unconverged']:.1%} | "
+          f"{s['contact_residual_max']:.1e} | {s['wall_time_s']:.0f} |")
+PY
