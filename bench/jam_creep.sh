@@ -11,16 +11,8 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
-label=$(date +%Y%m%d) binary=build/dilatant jobs=2 report_only=0
-while (($# > 0)); do
-  case "$1" in
-    --label) label=$2; shift 2 ;;
-    --binary) binary=$2; shift 2 ;;
-    --jobs) jobs=$2; shift 2 ;;
-    --report-only) report_only=1; shift ;;
-    *) echo "usage: $0 [--label L] [--binary PATH] [--jobs N] [--report-only]" >&2; exit 2 ;;
-  esac
-done
+source bench/lib.sh
+parse_study_args "$0" "$@"
 out=bench/results/jam-$label
 mkdir -p "$out"
 
@@ -36,13 +28,14 @@ runs=()
 if ((!report_only)); then
   for m in sor cg; do for tol in 1e-3 1e-4 1e-5; do runs+=("$m $tol"); done; done
 fi
-for r in "${runs[@]}"; do
-  while (($(jobs -rp | wc -l) >= jobs)); do sleep 1; done
-  read -r m tol <<<"$r"
+run_one() {
+  local m tol
+  read -r m tol <<<"$1"
   # shellcheck disable=SC2086
   nice "$binary" run "${cell[@]}" ${methods[$m]} --set solver.tolerance="$tol" \
-    --out "$out/$m-$tol" -q 2>/dev/null &
-done
+    --out "$out/$m-$tol" -q 2>/dev/null
+}
+for r in "${runs[@]}"; do queue_run run_one "$r"; done
 wait
 find "$out" -type f ! -name summary.json ! -name config.toml ! -name timeseries.csv -delete
 python3 - "$out" <<'PY'

@@ -10,16 +10,8 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
-label=$(date +%Y%m%d) binary=build/dilatant jobs=2 report_only=0
-while (($# > 0)); do
-  case "$1" in
-    --label) label=$2; shift 2 ;;
-    --binary) binary=$2; shift 2 ;;
-    --jobs) jobs=$2; shift 2 ;;
-    --report-only) report_only=1; shift ;;
-    *) echo "usage: $0 [--label L] [--binary PATH] [--jobs N]" >&2; exit 2 ;;
-  esac
-done
+source bench/lib.sh
+parse_study_args "$0" "$@"
 out=bench/results/tolerance-$label
 mkdir -p "$out"
 
@@ -49,10 +41,7 @@ run_one() {
     --out "$out/$p-$m-$tol" -q 2>/dev/null || true
 }
 ((report_only)) && runs=()
-for r in "${runs[@]}"; do
-  while (($(jobs -rp | wc -l) >= jobs)); do sleep 1; done
-  run_one "$r" &
-done
+for r in "${runs[@]}"; do queue_run run_one "$r"; done
 wait
 # Keep what the table reads and what made it; the rest is large and reproducible.
 find "$out" -type f ! -name summary.json ! -name config.toml -delete
