@@ -9,7 +9,7 @@ packages=(
   g++ cmake ninja-build pkg-config                  # toolchain
   libgtest-dev libgmock-dev libbenchmark-dev        # tests and benchmarks
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libeigen3-dev libfmt-dev  # libraries
-  python3 python3-numpy python3-vtk9                # post-processing scripts
+  python3 python3-numpy python3-matplotlib python3-vtk9  # figures and post-processing scripts
   clang-format                                      # formatting check (scripts/test.sh)
 )
 packages+=("$@")

@@ -20,6 +20,8 @@ stage() {
 }
 
 bash scripts/install-deps.sh
+# install-deps.sh installed matplotlib: the CLI tests must see the figures drawn.
+export DILATANT_REQUIRE_PLOTS=1
 
 if stage "release build" bash scripts/build.sh release; then
   stage "release tests" ctest --test-dir build --output-on-failure --no-tests=error -j "$jobs" || true
