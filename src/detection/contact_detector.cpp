@@ -108,6 +108,7 @@ void ContactDetector::add_pair_contacts(const World& world, double margin, std::
     std::sort(neighbours.begin(), neighbours.begin() + count);
     count = static_cast<int>(std::unique(neighbours.begin(), neighbours.begin() + count) -
                              neighbours.begin());
+    const std::size_t first = contacts.size();
     for (int q = 0; q < count; ++q) {
       const int cell = neighbours[q];
       for (int s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s) {
@@ -122,9 +123,14 @@ void ContactDetector::add_pair_contacts(const World& world, double margin, std::
         c.other = static_cast<std::int32_t>(j);
         c.normal = dist > 0.0 ? Vec3(d / dist) : Vec3::UnitZ();
         c.gap = gap;
+        finish_contact(b, c);
         contacts.push_back(c);
       }
     }
+    // i's partners in the order of j: blocks of consecutive i joined in order
+    // then give the (i, j) order of the whole list without a global sort.
+    std::sort(contacts.begin() + static_cast<std::ptrdiff_t>(first), contacts.end(),
+              [](const Contact& a, const Contact& c) { return a.other < c.other; });
   }
 }
 
@@ -148,11 +154,8 @@ void ContactDetector::detect(const World& world, double margin, std::vector<Cont
       add_pair_contacts(world, margin, static_cast<std::size_t>(i), local);
     }
   }
+  // Each thread's block is sorted by (i, j) and the blocks are in order of i.
   for (const auto& local : per_thread_) contacts.insert(contacts.end(), local.begin(), local.end());
-  // Sphere pairs come out grouped by i; sort by (i, j) for a reproducible order.
-  std::sort(contacts.begin(), contacts.end(), [](const Contact& a, const Contact& c) {
-    return a.i != c.i ? a.i < c.i : a.other < c.other;
-  });
   for (std::size_t k = 0; k < world.planes.size(); ++k) {
     const Plane& plane = world.planes[k];
     for (std::size_t i = 0; i < b.size(); ++i) {
@@ -164,10 +167,10 @@ void ContactDetector::detect(const World& world, double margin, std::vector<Cont
       c.other = -static_cast<std::int32_t>(k) - 1;
       c.normal = plane.normal;
       c.gap = gap;
+      finish_contact(b, c);
       contacts.push_back(c);
     }
   }
-  for (Contact& c : contacts) finish_contact(b, c);
 }
 
 }  // namespace dilatant

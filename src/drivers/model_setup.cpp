@@ -22,7 +22,8 @@ SolverSettings make_solver_settings(const SolverConfig& s) {
                         .freeze_branches_after = s.freeze_branches_after,
                         .threads = s.threads > 0 ? s.threads : cores,
                         .relaxation = s.relaxation,
-                        .acceleration = s.acceleration};
+                        .acceleration = s.acceleration,
+                        .skip_open_contacts = s.skip_open_contacts};
 }
 
 }  // namespace dilatant

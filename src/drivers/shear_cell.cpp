@@ -53,7 +53,7 @@ ShearCell::ShearCell(Config config, ShearCellState state)
   // The walls are rough glued grains: Coulomb friction (docs/shear-cell.md).
   state_.walls.set_contact_law(CoulombLaw{config_.cell()->wall_friction, units_.eta_f});
   stepper_.restore_contact_memory(state_.contact_memory);
-  cost_.threads = make_solver_settings(config_.solver).threads;
+  cost_.threads = stepper_.settings().threads;
 }
 
 ShearCell ShearCell::resumed(Config config, const std::filesystem::path& checkpoint) {
@@ -123,7 +123,9 @@ const StepReport& ShearCell::step() {
   last_ = stepper_.step(s.world, &s.walls);
   cost_.detection_s += last_.detection_seconds;
   cost_.solve_s += last_.solve_seconds;
-  cost_.contact_updates += double(last_.solve.iterations) * double(last_.contacts_detected);
+  cost_.contact_updates += last_.solve.contact_visits;
+  if (last_.contacts_detected > 0)
+    cost_.sweep_equivalents += last_.solve.contact_visits / double(last_.contacts_detected);
   cost_.steps += 1.0;
   ++s.steps;
   s.strain += wall.velocity * s.dt / lz;

@@ -162,6 +162,9 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   j["time_measure_s"] = cost.measure_s;
   j["time_other_s"] = cost.wall_s - cost.build_s - cost.detection_s - cost.solve_s - cost.measure_s;
   j["ns_per_contact_update"] = cost.ns_per_contact_update();
+  // Work of the solver per step in passes over all detected contacts (= sweeps
+  // per step when every sweep visits every contact).
+  j["sweep_equivalents_per_step"] = cost.steps > 0.0 ? cost.sweep_equivalents / cost.steps : 0.0;
   j["wall_time_per_strain_s"] =
       cost.strain > 0.0 ? (cost.wall_s - cost.build_s) / cost.strain : 0.0;
   j["steps_per_strain"] = cost.strain > 0.0 ? cost.steps / cost.strain : 0.0;

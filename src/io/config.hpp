@@ -81,6 +81,7 @@ struct SolverConfig {
   int threads = SolverSettings{}.threads;  // 0 => all cores (solver/slab_partition.hpp)
   double relaxation = SolverSettings::kRunRelaxation;
   Acceleration acceleration = SolverSettings{}.acceleration;
+  bool skip_open_contacts = true;  // runs skip open contacts between full sweeps
 };
 
 struct RunConfig {

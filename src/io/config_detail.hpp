@@ -49,6 +49,7 @@ class Section {
   double number(std::string_view key, double fallback) const;
   std::int64_t integer(std::string_view key, std::int64_t fallback) const;
   std::string string(std::string_view key, const std::string& fallback) const;
+  bool boolean(std::string_view key, bool fallback) const;
   Vec3 vec3(std::string_view key, const Vec3& fallback) const;
   std::array<bool, 3> bool3(std::string_view key, const std::array<bool, 3>& fallback) const;
 

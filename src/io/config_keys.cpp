@@ -277,6 +277,16 @@ std::vector<ConfigKey> make_keys() {
         t.insert("acceleration",
                  c.solver.acceleration == Acceleration::ConjugateGradient ? "cg" : "none");
       }});
+  k.push_back(ConfigKey{
+      "solver", "skip_open_contacts", Any, "boolean", "", "true or false",
+      "sweeps between full ones visit only the contacts loaded after the last full sweep; "
+      "same stopping test, on a full sweep (not with acceleration = \"cg\")",
+      [](const Section& s, Config& c, const std::filesystem::path&) {
+        c.solver.skip_open_contacts = s.boolean("skip_open_contacts", c.solver.skip_open_contacts);
+      },
+      [](const Config& c, toml::table& t) {
+        t.insert("skip_open_contacts", c.solver.skip_open_contacts);
+      }});
   // [run]
   k.push_back(number("run", "strain", Cell, &run, &RunConfig::strain, at_least(0.0), "",
                      "total strain (> transient_strain)"));

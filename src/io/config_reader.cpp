@@ -141,6 +141,13 @@ std::string Section::string(std::string_view key, const std::string& fallback) c
   type_error(*n, name(key), "a string");
 }
 
+bool Section::boolean(std::string_view key, bool fallback) const {
+  const auto* n = find(key);
+  if (n == nullptr) return fallback;
+  if (const auto* b = n->as_boolean()) return b->get();
+  type_error(*n, name(key), "a boolean (true or false)");
+}
+
 Vec3 Section::vec3(std::string_view key, const Vec3& fallback) const {
   const auto* n = find(key);
   if (n == nullptr) return fallback;

@@ -7,14 +7,15 @@
 namespace dilatant {
 
 struct RunCost {
-  double wall_s = 0.0;       // whole invocation
-  double build_s = 0.0;      // initial state (packing) or checkpoint load
-  double detection_s = 0.0;  // contact detection, slab ordering, warm start
-  double solve_s = 0.0;      // Gauss–Seidel sweeps
-  double measure_s = 0.0;    // measurements, time series, snapshots (not checkpoints)
-  double contact_updates = 0.0;
-  double steps = 0.0;   // steps run in this invocation
-  double strain = 0.0;  // strain run in this invocation
+  double wall_s = 0.0;             // whole invocation
+  double build_s = 0.0;            // initial state (packing) or checkpoint load
+  double detection_s = 0.0;        // contact detection, slab ordering, warm start
+  double solve_s = 0.0;            // Gauss–Seidel sweeps
+  double measure_s = 0.0;          // measurements, time series, snapshots (not checkpoints)
+  double contact_updates = 0.0;    // local solves (a skipped open contact is not one)
+  double sweep_equivalents = 0.0;  // sum over steps of contact_updates / contacts detected
+  double steps = 0.0;              // steps run in this invocation
+  double strain = 0.0;             // strain run in this invocation
   int threads = 1;
 
   double ns_per_contact_update() const {

@@ -24,11 +24,11 @@ void add_range(std::span<const Contact> contacts, const Bodies& b, const Law& la
   for (const Contact& c : contacts) {
     const LocalAnswer a = solve_local(c, b, law, dt, inv_dt, 1.0, imposed_branch(c, true));
     const double dn = std::abs(a.p_n - c.p_n);
-    const double dt_ = (a.p_t - c.p_t).norm();
+    const double dp_t = (a.p_t - c.p_t).norm();
     s.normal_max = std::max(s.normal_max, dn);
-    s.tangential_max = std::max(s.tangential_max, dt_);
+    s.tangential_max = std::max(s.tangential_max, dp_t);
     s.normal_squared += dn * dn;
-    s.tangential_squared += dt_ * dt_;
+    s.tangential_squared += dp_t * dp_t;
     if (c.p_n > 0.0) {
       s.impulse_squared += c.p_n * c.p_n + c.p_t.squaredNorm();
       s.loaded += 1.0;
@@ -40,16 +40,30 @@ void add_range(std::span<const Contact> contacts, const Bodies& b, const Law& la
 
 ContactResidual contact_residual(const std::vector<Contact>& contacts, const SlabPartition& slabs,
                                  const Bodies& bodies, const FrictionLaw& law,
-                                 const FrictionLaw& boundary_law, double dt) {
-  Sums s;
-  for (int k = 0; k < slabs.count(); ++k) {
+                                 const FrictionLaw& boundary_law, double dt, int threads) {
+  // Read-only, so the slabs are independent: summed per slab, then added in
+  // slab order, which gives the same bits for any number of threads.
+  std::vector<Sums> per_slab(static_cast<std::size_t>(slabs.count()));
+  const int n_slabs = slabs.count();
+#pragma omp parallel for schedule(static) num_threads(std::max(1, threads)) if (threads > 1)
+  for (int k = 0; k < n_slabs; ++k) {
     const auto ks = static_cast<std::size_t>(k);
     const std::span<const Contact> particles(contacts.data() + slabs.begin[ks],
                                              slabs.boundary_begin[ks] - slabs.begin[ks]);
     const std::span<const Contact> boundary(contacts.data() + slabs.boundary_begin[ks],
                                             slabs.begin[ks + 1] - slabs.boundary_begin[ks]);
-    std::visit([&](const auto& l) { add_range(particles, bodies, l, dt, s); }, law);
-    std::visit([&](const auto& l) { add_range(boundary, bodies, l, dt, s); }, boundary_law);
+    Sums& slab = per_slab[ks];
+    std::visit([&](const auto& l) { add_range(particles, bodies, l, dt, slab); }, law);
+    std::visit([&](const auto& l) { add_range(boundary, bodies, l, dt, slab); }, boundary_law);
+  }
+  Sums s;
+  for (const Sums& slab : per_slab) {
+    s.normal_max = std::max(s.normal_max, slab.normal_max);
+    s.tangential_max = std::max(s.tangential_max, slab.tangential_max);
+    s.normal_squared += slab.normal_squared;
+    s.tangential_squared += slab.tangential_squared;
+    s.impulse_squared += slab.impulse_squared;
+    s.loaded += slab.loaded;
   }
   ContactResidual r;
   if (contacts.empty()) return r;

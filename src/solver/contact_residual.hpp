@@ -36,9 +36,10 @@ struct ContactResidual {
 
 // The residual of the current impulses of `contacts` (ordered by `slabs`: the
 // contacts of each slab's boundary range obey `boundary_law`), reading the
-// bodies' current velocities. Reads only.
+// bodies' current velocities. Reads only; `threads` share the slabs, with the
+// same result for any number of them.
 ContactResidual contact_residual(const std::vector<Contact>& contacts, const SlabPartition& slabs,
                                  const Bodies& bodies, const FrictionLaw& law,
-                                 const FrictionLaw& boundary_law, double dt);
+                                 const FrictionLaw& boundary_law, double dt, int threads = 1);
 
 }  // namespace dilatant

@@ -9,12 +9,17 @@ namespace dilatant {
 
 namespace {
 
+// One pass over `contacts` (all of them, or only those listed in `only`). A full
+// pass given `loaded` lists the contacts that end it with an impulse: the
+// partial passes that follow visit only those (see "Open contacts" in the header).
 template <class Law>
-SweepChange sweep(std::span<Contact> contacts, Bodies& b, const Law& law, double dt,
-                  double relaxation, bool freeze_branches, Vec3* changes) {
+SweepChange sweep(std::span<Contact> contacts, const std::vector<std::int32_t>* only, Bodies& b,
+                  const Law& law, double dt, double relaxation, bool freeze_branches, Vec3* changes,
+                  std::vector<std::int32_t>* loaded) {
   SweepChange change;
   const double inv_dt = 1.0 / dt;
-  for (Contact& c : contacts) {
+  const auto visit = [&](std::size_t k) {
+    Contact& c = contacts[k];
     const LocalAnswer a =
         solve_local(c, b, law, dt, inv_dt, relaxation, imposed_branch(c, freeze_branches));
     const double p_n = a.p_n;
@@ -22,7 +27,7 @@ SweepChange sweep(std::span<Contact> contacts, Bodies& b, const Law& law, double
     const TangentialSolution& t = a.tangential;
     const Vec3 dp = (p_n - c.p_n) * c.normal + (p_t - c.p_t);
     apply_impulse(c, dp, b);
-    if (changes != nullptr) changes[&c - contacts.data()] = dp;
+    if (changes != nullptr) changes[k] = dp;
     c.p_n = p_n;
     c.p_t = p_t;
     c.sliding_speed = t.sliding_speed;
@@ -30,6 +35,14 @@ SweepChange sweep(std::span<Contact> contacts, Bodies& b, const Law& law, double
     c.regime = t.regime;
     change.change_squared += dp.squaredNorm();
     change.impulse_squared += p_n * p_n + p_t.squaredNorm();
+    if (loaded != nullptr && (p_n > 0.0 || p_t.squaredNorm() > 0.0))
+      loaded->push_back(static_cast<std::int32_t>(k));
+  };
+  if (only == nullptr) {
+    if (loaded != nullptr) loaded->clear();
+    for (std::size_t k = 0; k < contacts.size(); ++k) visit(k);
+  } else {
+    for (const std::int32_t k : *only) visit(static_cast<std::size_t>(k));
   }
   return change;
 }
@@ -58,11 +71,16 @@ double round_off_floor_squared(const std::vector<Contact>& contacts, const Bodie
 
 SweepChange sweep_range(std::vector<Contact>& contacts, std::size_t begin, std::size_t end,
                         Bodies& bodies, const FrictionLaw& law, double dt, double relaxation,
-                        bool freeze, std::vector<Vec3>* changes = nullptr) {
+                        bool freeze, std::vector<Vec3>* changes = nullptr,
+                        const std::vector<std::int32_t>* only = nullptr,
+                        std::vector<std::int32_t>* loaded = nullptr) {
   std::span<Contact> part(contacts.data() + begin, end - begin);
   Vec3* out = changes != nullptr ? changes->data() + begin : nullptr;
   return std::visit(
-      [&](const auto& l) { return sweep(part, bodies, l, dt, relaxation, freeze, out); }, law);
+      [&](const auto& l) {
+        return sweep(part, only, bodies, l, dt, relaxation, freeze, out, loaded);
+      },
+      law);
 }
 
 // The conjugate-gradient step of the nonsmooth nonlinear CG method (see the
@@ -132,17 +150,26 @@ SolveReport solve_contacts(const ContactProblem& problem, const SolverSettings& 
     direction.assign(contacts.size(), Vec3::Zero());
   }
   double change_before = 0.0;  // |r|^2 of the previous sweep
-  const auto sweep_slab = [&](int k, int sweep, bool freeze) {
+  // Skipping open contacts (header): per slab, the contacts of its particle and
+  // its boundary range that carried an impulse after the last full sweep.
+  const bool skip_open = settings.skip_open_contacts && !accelerate;
+  std::vector<std::vector<std::int32_t>> loaded(skip_open ? 2 * static_cast<std::size_t>(n) : 0);
+  const auto sweep_slab = [&](int k, int sweep, bool freeze, bool full) {
     const auto ks = static_cast<std::size_t>(k);
     std::vector<Vec3>* out = accelerate ? &changes : nullptr;
-    SweepChange ch = sweep_range(contacts, slabs.begin[ks], slabs.boundary_begin[ks], bodies, law,
-                                 dt, omega, freeze, out);
+    std::vector<std::int32_t>* list = skip_open ? &loaded[2 * ks] : nullptr;
+    std::vector<std::int32_t>* list_boundary = skip_open ? &loaded[2 * ks + 1] : nullptr;
+    const std::size_t mid = slabs.boundary_begin[ks];
+    SweepChange ch = sweep_range(contacts, slabs.begin[ks], mid, bodies, law, dt, omega, freeze,
+                                 out, full ? nullptr : list, full ? list : nullptr);
     const SweepChange ch_boundary =
-        sweep_range(contacts, slabs.boundary_begin[ks], slabs.begin[ks + 1], bodies, boundary_law,
-                    dt, omega, freeze, out);
+        sweep_range(contacts, mid, slabs.begin[ks + 1], bodies, boundary_law, dt, omega, freeze,
+                    out, full ? nullptr : list_boundary, full ? list_boundary : nullptr);
+    const std::size_t visits =
+        full ? slabs.begin[ks + 1] - slabs.begin[ks] : list->size() + list_boundary->size();
     partial[static_cast<std::size_t>((sweep & 1) * n + k)] = {
         ch.change_squared + ch_boundary.change_squared,
-        ch.impulse_squared + ch_boundary.impulse_squared};
+        ch.impulse_squared + ch_boundary.impulse_squared, static_cast<double>(visits)};
   };
   // Residual of a finished sweep: slab sums added in a fixed order, so every
   // thread computes the same value whatever the thread count.
@@ -163,21 +190,30 @@ SolveReport solve_contacts(const ContactProblem& problem, const SolverSettings& 
   // last slab, which is odd, touches the shear cell's top wall (boundary.hpp).
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
+    // Whether the next sweep visits every contact: the same decision in every
+    // thread, as it follows from the residual all of them compute alike.
+    bool full = true;
     for (int sweep = 0; sweep < settings.max_iterations; ++sweep) {
       const bool freeze = sweep >= settings.freeze_branches_after;
 #pragma omp for schedule(static)
-      for (int k = 0; k < n; k += 2) sweep_slab(k, sweep, freeze);
+      for (int k = 0; k < n; k += 2) sweep_slab(k, sweep, freeze, full);
 #pragma omp for schedule(static)
-      for (int k = 1; k < n; k += 2) sweep_slab(k, sweep, freeze);
+      for (int k = 1; k < n; k += 2) sweep_slab(k, sweep, freeze, full);
       const double residual = residual_of(sweep);
+      const bool met = residual <= settings.tolerance;
 #pragma omp masked
       {
         if (boundary != nullptr) boundary->solve_block(contacts, bodies);
         report.iterations = sweep + 1;
         report.residual = residual;
-        report.converged = residual <= settings.tolerance;
+        report.converged = met && full;
+        for (int k = 0; k < n; ++k)
+          report.contact_visits += partial[static_cast<std::size_t>((sweep & 1) * n + k)].visits;
       }
-      if (residual <= settings.tolerance) break;
+      // Only a full sweep can end the solve: a partial one has not looked at
+      // the skipped contacts, so meeting the tolerance there calls for a full one.
+      if (met && full) break;
+      full = !skip_open || met || (sweep + 1) % kFullSweepEvery == 0;
       if (accelerate) {
         // Serial, and behind barriers: the step touches every contact's bodies.
 #pragma omp barrier

@@ -20,7 +20,12 @@ double TimeStepper::detection_margin(const World& world) const {
 }
 
 void TimeStepper::warm_start(Bodies& bodies) {
-  for (Contact& c : contacts_) {
+  // The look-ups only read the memory: contacts are shared among the threads.
+  const auto n = static_cast<std::int64_t>(contacts_.size());
+  const int threads = settings_.threads;
+#pragma omp parallel for schedule(static) num_threads(std::max(1, threads)) if (threads > 1)
+  for (std::int64_t k = 0; k < n; ++k) {
+    Contact& c = contacts_[static_cast<std::size_t>(k)];
     const auto it = memory_.find(contact_key(c));
     if (it == memory_.end()) continue;
     // The normal may have turned since the last step: keep the part of the old
@@ -33,10 +38,28 @@ void TimeStepper::warm_start(Bodies& bodies) {
   apply_impulses(contacts_, bodies);
 }
 
+void TimeStepper::relative_velocities(const Bodies& bodies, std::vector<Vec3>& out) const {
+  out.resize(contacts_.size());
+  const auto n = static_cast<std::int64_t>(contacts_.size());
+  const int threads = settings_.threads;
+#pragma omp parallel for schedule(static) num_threads(std::max(1, threads)) if (threads > 1)
+  for (std::int64_t k = 0; k < n; ++k) {
+    const auto ks = static_cast<std::size_t>(k);
+    out[ks] = relative_velocity(contacts_[ks], bodies);
+  }
+}
+
 double TimeStepper::largest_overlap(const World& world) const {
   double overlap = 0.0;
   const Bodies& b = world.bodies;
-  for (const Contact& c : contacts_) {
+  const auto n = static_cast<std::int64_t>(contacts_.size());
+  const int threads = settings_.threads;
+  // A maximum: the same value whatever the threads' order.
+#pragma omp parallel for schedule(static) num_threads(std::max(1, threads)) if (threads > 1) \
+    reduction(max                                                                            \
+              : overlap)
+  for (std::int64_t k = 0; k < n; ++k) {
+    const Contact& c = contacts_[static_cast<std::size_t>(k)];
     double gap;
     if (c.with_plane()) {
       gap = world.planes[c.plane_index()].distance(b.position[c.i]) - b.radius[c.i];
@@ -77,10 +100,7 @@ StepReport TimeStepper::step(World& world, Boundary* boundary) {
   const std::span<const BodyGroup> boundary_bodies =
       boundary != nullptr ? boundary->body_groups() : std::span<const BodyGroup>{};
   slabs_ = partition_into_slabs(contacts_, world, boundary_bodies, scratch_);
-  free_velocity_.resize(contacts_.size());
-  for (std::size_t k = 0; k < contacts_.size(); ++k) {
-    free_velocity_[k] = relative_velocity(contacts_[k], b);
-  }
+  relative_velocities(b, free_velocity_);
   warm_start(b);
   const auto solve_start = Clock::now();
   if (boundary != nullptr) boundary->begin_solve(contacts_);
@@ -91,8 +111,9 @@ StepReport TimeStepper::step(World& world, Boundary* boundary) {
                                  .boundary = boundary,
                                  .dt = dt_},
                                 settings_);
-  report.contact_residual = contact_residual(
-      contacts_, slabs_, b, law_, boundary != nullptr ? boundary->contact_law() : law_, dt_);
+  report.contact_residual = contact_residual(contacts_, slabs_, b, law_,
+                                             boundary != nullptr ? boundary->contact_law() : law_,
+                                             dt_, settings_.threads);
   implicit_drag_.restore_masses(b);
 
   const auto solve_end = Clock::now();
@@ -107,10 +128,7 @@ StepReport TimeStepper::step(World& world, Boundary* boundary) {
     ++report.contacts_closed;
   }
   report.contacts_detected = contacts_.size();
-  end_velocity_.resize(contacts_.size());
-  for (std::size_t k = 0; k < contacts_.size(); ++k) {
-    end_velocity_[k] = relative_velocity(contacts_[k], b);
-  }
+  relative_velocities(b, end_velocity_);
   report.contact_work = contact_work(contacts_, free_velocity_, end_velocity_);
 
   // 6. integrate positions with the end-of-step velocities (a body of infinite

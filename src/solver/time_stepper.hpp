@@ -57,6 +57,7 @@ class TimeStepper {
   void set_fluid_forces(const FluidForces* fluid) { fluid_ = fluid; }
   void set_dt(double dt) { dt_ = dt; }
   double dt() const { return dt_; }
+  const SolverSettings& settings() const { return settings_; }
   const FrictionLaw& law() const { return law_; }
   // Contacts of the last step with their impulses and friction regimes.
   const std::vector<Contact>& contacts() const { return contacts_; }
@@ -73,6 +74,8 @@ class TimeStepper {
  private:
   double detection_margin(const World& world) const;
   void warm_start(Bodies& bodies);
+  // Relative velocity at every contact of contacts_, for contact_work.
+  void relative_velocities(const Bodies& bodies, std::vector<Vec3>& out) const;
   double largest_overlap(const World& world) const;
 
   FrictionLaw law_;
