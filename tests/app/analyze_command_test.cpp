@@ -30,19 +30,6 @@ std::vector<std::string> lines(const std::string& text) {
   return out;
 }
 
-// scripts/test.sh installs matplotlib and sets DILATANT_REQUIRE_PLOTS=1, so CI
-// checks that the figures are drawn; elsewhere a machine without it checks the
-// one-line "plots skipped" path instead.
-bool matplotlib_available() {
-  const bool available =
-      std::system("/usr/bin/python3 -c 'import matplotlib, numpy' >/dev/null 2>&1") == 0;
-  const char* required = std::getenv("DILATANT_REQUIRE_PLOTS");
-  if (required != nullptr && std::string(required) == "1") {
-    EXPECT_TRUE(available) << "DILATANT_REQUIRE_PLOTS=1 but python3 cannot import matplotlib";
-  }
-  return available;
-}
-
 TEST(AnalyzeCommand, ExampleManifestGivesTablesPlotsAndASummary) {
   test::CliDir dir;
   const fs::path out = dir.path() / "out";
@@ -54,7 +41,7 @@ TEST(AnalyzeCommand, ExampleManifestGivesTablesPlotsAndASummary) {
   const auto fits = nlohmann::json::parse(read_text(out / "fits.json"));
   EXPECT_NEAR(fits["samples"]["D"]["phi_max"].get<double>(), 0.545, 0.005);
   EXPECT_NE(r.out.find("collapse of 4 samples"), std::string::npos) << r.out;
-  if (matplotlib_available()) {
+  if (test::matplotlib_available()) {
     EXPECT_EQ(r.err, "");
     for (const auto& plot : kPlots)
       for (const char* ext : {".png", ".svg"})

@@ -2,6 +2,7 @@
 // Running the real `dilatant` executable from a test: a private temporary
 // directory (tests/io/io_test_files.hpp) that can also run the executable inside
 // it, capturing its exit code, stdout and stderr.
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -32,6 +33,20 @@ inline std::string shell_quote(const std::string& s) {
   }
   q.push_back('\'');
   return q;
+}
+
+// Whether /usr/bin/python3 can draw the figures. scripts/test.sh installs
+// matplotlib and sets DILATANT_REQUIRE_PLOTS=1, so in CI its absence is a test
+// failure (the figures must be drawn); elsewhere a machine without it checks
+// the one-line "plots skipped" path instead.
+inline bool matplotlib_available() {
+  const bool available =
+      std::system("/usr/bin/python3 -c 'import matplotlib, numpy' >/dev/null 2>&1") == 0;
+  const char* required = std::getenv("DILATANT_REQUIRE_PLOTS");
+  if (required != nullptr && std::string(required) == "1") {
+    EXPECT_TRUE(available) << "DILATANT_REQUIRE_PLOTS=1 but python3 cannot import matplotlib";
+  }
+  return available;
 }
 
 struct RunResult {

@@ -67,19 +67,6 @@ std::map<std::string, fs::file_time_type> summary_times(const fs::path& out) {
   return times;
 }
 
-// scripts/test.sh installs matplotlib and sets DILATANT_REQUIRE_PLOTS=1, so CI
-// checks that the figures are drawn; elsewhere a machine without it checks the
-// one-line "plots skipped" path instead.
-bool matplotlib_available() {
-  const bool available =
-      std::system("/usr/bin/python3 -c 'import matplotlib, numpy' >/dev/null 2>&1") == 0;
-  const char* required = std::getenv("DILATANT_REQUIRE_PLOTS");
-  if (required != nullptr && std::string(required) == "1") {
-    EXPECT_TRUE(available) << "DILATANT_REQUIRE_PLOTS=1 but python3 cannot import matplotlib";
-  }
-  return available;
-}
-
 const std::vector<std::string> kPointFolders = {"000-mu0=0.1_lambda=3", "001-mu0=0.1_lambda=30",
                                                 "002-mu0=0.4_lambda=3", "003-mu0=0.4_lambda=30"};
 
@@ -248,7 +235,7 @@ TEST(SweepCommand, PlotDrawsTheFiguresOrSaysInOneLineWhyNot) {
   EXPECT_EQ(r.out, "");
   const std::vector<std::string> figures = {"flow_curves", "fig1b_viscosity", "fig1c_sommerfeld",
                                             "fig1d_contacts"};
-  if (matplotlib_available()) {
+  if (test::matplotlib_available()) {
     EXPECT_EQ(r.err, "");
     for (const auto& f : figures)
       for (const char* ext : {".png", ".svg"})
