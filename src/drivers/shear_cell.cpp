@@ -83,8 +83,8 @@ ShearCell ShearCell::continued(Config config, const std::filesystem::path& check
 // c = solver.max_displacement (default 0.02) times r_min in one step, neither at
 // its current speed nor, from rest, under the wall's drive:
 //     dt = min(c r_min / v_max, sqrt(2 c r_min / a_wall)).
-double ShearCell::choose_dt() const {
-  if (config_.solver.dt > 0.0) return config_.solver.dt;
+ShearCell::StepChoice ShearCell::choose_dt() const {
+  if (config_.solver.dt > 0.0) return {config_.solver.dt, false};
   const Bodies& b = state_.world.bodies;
   double v_max = 0.0, r_min = b.radius[0];
   for (std::size_t i = 0; i < b.size(); ++i) {
@@ -94,7 +94,8 @@ double ShearCell::choose_dt() const {
   const SlidingWall& wall = state_.walls.top();
   const double c = config_.solver.max_displacement;
   const double dt_drive = std::sqrt(2.0 * c * r_min * wall.mass / wall.drive_force);
-  return v_max > 0.0 ? std::min(dt_drive, c * r_min / v_max) : dt_drive;
+  const double dt_speed = v_max > 0.0 ? c * r_min / v_max : dt_drive;
+  return {std::min(dt_drive, dt_speed), dt_drive <= dt_speed};
 }
 
 double ShearCell::total_kinetic_energy() const {
@@ -112,7 +113,9 @@ bool ShearCell::snapshot_due() const {
 const StepReport& ShearCell::step() {
   ShearCellState& s = state_;
   const double lz = config_.cell()->size[2];
-  s.dt = choose_dt();
+  const StepChoice choice = choose_dt();
+  s.dt = choice.dt;
+  cost_.steps_dt_by_drive += choice.by_drive ? 1.0 : 0.0;
   stepper_.set_dt(s.dt);
   const SlidingWall& wall = s.walls.top();
   if (s.interval.steps == 0.0) s.interval.kinetic_start = total_kinetic_energy();

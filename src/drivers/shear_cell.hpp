@@ -72,7 +72,13 @@ class ShearCell {
 
  private:
   ShearCell(Config config, ShearCellState state);
-  double choose_dt() const;
+  // The automatic step, and whether the drive's bound (not the speed of the
+  // fastest body) set it.
+  struct StepChoice {
+    double dt = 0.0;
+    bool by_drive = false;
+  };
+  StepChoice choose_dt() const;
   double total_kinetic_energy() const;
   void accumulate(const StepReport& report);
 

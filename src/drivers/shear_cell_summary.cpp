@@ -167,6 +167,9 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   j["sweep_equivalents_per_step"] = cost.steps > 0.0 ? cost.sweep_equivalents / cost.steps : 0.0;
   j["wall_time_per_strain_s"] =
       cost.strain > 0.0 ? (cost.wall_s - cost.build_s) / cost.strain : 0.0;
+  // Which rule of the automatic step (drivers/shear_cell.cpp) limited it: the
+  // drive's bound, or the fastest body's speed in the rest of the steps.
+  j["frac_steps_dt_by_drive"] = cost.steps > 0.0 ? cost.steps_dt_by_drive / cost.steps : 0.0;
   j["steps_per_strain"] = cost.strain > 0.0 ? cost.steps / cost.strain : 0.0;
   j["peak_memory_mib"] = peak_memory_mib();
   return j;

@@ -15,6 +15,7 @@ struct RunCost {
   double contact_updates = 0.0;    // local solves (a skipped open contact is not one)
   double sweep_equivalents = 0.0;  // sum over steps of contact_updates / contacts detected
   double steps = 0.0;              // steps run in this invocation
+  double steps_dt_by_drive = 0.0;  // of those, steps whose dt the wall's drive bound set
   double strain = 0.0;             // strain run in this invocation
   int threads = 1;
 
