@@ -11,6 +11,7 @@
 #include "drivers/shear_cell_run.hpp"
 #include "io/config.hpp"
 #include "io/config_keys.hpp"
+#include "io/input_error.hpp"
 
 namespace dilatant {
 
@@ -33,6 +34,11 @@ CLI::App* add_run_command(CLI::App& app, RunCommandArgs& args) {
   run->add_flag("--resume", args.resume,
                 "Shear cell: continue from OUT/checkpoint.bin (same config) instead of starting "
                 "anew; the result is identical to an uninterrupted run");
+  run->add_option("--start-from", args.start_from,
+                  "Shear cell: start from the state in this checkpoint.bin (a run of the same "
+                  "cell size), under this config, strain counted from 0 (a sweep's continuation)")
+      ->check(CLI::ExistingFile)
+      ->excludes("--resume");
   return run;
 }
 
@@ -50,12 +56,14 @@ void warn_if_unconverged(const Config& config, long steps, long unconverged) {
 }
 extern "C" void request_stop(int) { g_stop_requested.store(true); }
 
-int run_cell(const Config& config, const RunOptions& options, bool resume) {
+int run_cell(const Config& config, const RunOptions& options, bool resume,
+             const std::string& start_from) {
   // SIGINT/SIGTERM: finish the step, write a checkpoint, exit cleanly.
   std::signal(SIGINT, request_stop);
   std::signal(SIGTERM, request_stop);
-  const CellOutcome outcome =
-      run_shear_cell(config, CellRunOptions{options, resume, &g_stop_requested});
+  CellRunOptions cell_options{options, resume, &g_stop_requested};
+  cell_options.start_from = start_from;
+  const CellOutcome outcome = run_shear_cell(config, cell_options);
   if (outcome.interrupted) {
     std::cerr << fmt::format(
         "dilatant: interrupted; checkpoint written to {}; continue with "
@@ -78,13 +86,15 @@ int execute_run_command(const RunCommandArgs& args) {
                                             : load_config(args.config, args.overrides);
   RunOptions options;
   options.quiet = args.quiet;
+  if (!args.start_from.empty() && !config.cell())
+    throw InputError(args.start_from + ": --start-from needs a shear-cell run ([cell])");
   options.out_dir =
       args.out.empty()
           ? std::filesystem::path("out") /
                 (args.config.empty() ? std::string("default")
                                      : std::filesystem::path(args.config).stem().string())
           : std::filesystem::path(args.out);
-  if (config.cell()) return run_cell(config, options, args.resume);
+  if (config.cell()) return run_cell(config, options, args.resume, args.start_from);
   const SceneOutcome outcome = run_scene(config, options);
   warn_if_unconverged(config, outcome.steps, outcome.unconverged_steps);
   if (!args.quiet) {

@@ -12,6 +12,7 @@ struct RunCommandArgs {
   std::vector<std::string> overrides;
   bool quiet = false;
   bool resume = false;
+  std::string start_from;  // shear cell: start from this checkpoint's state (--start-from)
 };
 
 CLI::App* add_run_command(CLI::App& app, RunCommandArgs& args);

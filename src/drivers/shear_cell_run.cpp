@@ -7,6 +7,7 @@
 
 #include "drivers/shear_cell.hpp"
 #include "io/atomic_file.hpp"
+#include "io/input_error.hpp"
 
 namespace dilatant {
 
@@ -28,6 +29,22 @@ CellOutcome outcome_of(const ShearCell& cell, bool interrupted) {
 
 }  // namespace
 
+namespace {
+
+// A state to start from that is not a checkpoint of this cell is bad input
+// (exit 2), named with its file by the message.
+ShearCell continued(const Config& config, const std::filesystem::path& start_from) {
+  try {
+    return ShearCell::continued(config, start_from);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw InputError(e.what());
+  }
+}
+
+}  // namespace
+
 CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const auto& out = options.run.out_dir;
@@ -36,7 +53,7 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
 
   const bool resuming = options.resume && std::filesystem::exists(checkpoint);
   ShearCell cell = resuming                      ? ShearCell::resumed(config, checkpoint)
-                   : !options.start_from.empty() ? ShearCell::continued(config, options.start_from)
+                   : !options.start_from.empty() ? continued(config, options.start_from)
                                                  : ShearCell(config);
   const double build_s = seconds_since(start);
   const double strain_at_start = cell.state().strain;
