@@ -10,7 +10,8 @@
 #   bash bench/accuracy_guard.sh --compare LABEL_A LABEL_B
 #
 # Keeps each run's summary.json as bench/results/accuracy-L/POINT-sSEED.json and
-# prints, per point, the seed mean and its standard error; --compare prints the
+# prints, per point, the seed mean and its standard error (for eta and P_BL at
+# least the one the runs' own block errors give); --compare prints the
 # difference of the means in units of their combined standard error.
 # (A jammed point is not included: bench/jam_creep.sh measures jams.)
 set -euo pipefail
@@ -67,11 +68,25 @@ def load(label):
         point = re.fullmatch(r"(.*)-s\d+", p.stem).group(1)
         points.setdefault(point, []).append(json.loads(p.read_text()))
     return points
-def mean_sem(values):
+def mean_sem(values, errors=None):
+    """Seed mean and its standard error. With each run's own (block) error, the
+    error is at least what those give, sqrt(sum err^2) / n: four seeds that
+    happen to agree closely must not make their mean look sharper than the runs."""
     m = statistics.fmean(values)
-    return m, (statistics.stdev(values) / math.sqrt(len(values)) if len(values) > 1 else math.nan)
+    sem = statistics.stdev(values) / math.sqrt(len(values)) if len(values) > 1 else math.nan
+    if errors:
+        sem = max(sem, math.sqrt(sum(e * e for e in errors)) / len(errors))
+    return m, sem
+ERRORS = {"eta": "eta_err", "frac_bl": "frac_bl_err"}
+def stats(runs, key):
+    errors = [r[ERRORS[key]] for r in runs] if key in ERRORS else None
+    return mean_sem([value(r, key) for r in runs], errors)
 keys = [("eta", "eta"), ("P_BL", "frac_bl"), ("sweeps/step", "mean_iterations"),
-        ("residual max", "contact_residual_max")]
+        ("sweep-equivalents/step", "sweep_equivalents_per_step"),
+        ("residual max", "contact_residual_max"), ("wall s/strain", "wall_time_per_strain_s")]
+def value(run, key):
+    # Runs made before sweep_equivalents_per_step existed visited every contact in every sweep.
+    return run.get(key, run["mean_iterations"] if key == "sweep_equivalents_per_step" else None)
 tables = {label: load(label) for label in sys.argv[1:]}
 print("| label | point | seeds | " + " | ".join(k for k, _ in keys) + " |")
 print("|---|---|---|" + "---|" * len(keys))
@@ -79,7 +94,7 @@ for label, points in tables.items():
     for point, runs in sorted(points.items()):
         cells = []
         for _, key in keys:
-            m, e = mean_sem([r[key] for r in runs])
+            m, e = stats(runs, key)
             cells.append(f"{m:.4g} ± {e:.2g}")
         print(f"| {label} | {point} | {len(runs)} | " + " | ".join(cells) + " |")
 if len(tables) == 2:
@@ -88,8 +103,8 @@ if len(tables) == 2:
     for point in sorted(set(a) & set(b)):
         parts = []
         for name, key in keys[:2]:
-            ma, ea = mean_sem([r[key] for r in a[point]])
-            mb, eb = mean_sem([r[key] for r in b[point]])
+            ma, ea = stats(a[point], key)
+            mb, eb = stats(b[point], key)
             parts.append(f"{name} {mb - ma:+.4g} ({(mb - ma) / math.hypot(ea, eb):+.1f} sigma)")
         print(f"- {point}: " + ", ".join(parts))
 PY

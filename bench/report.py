@@ -16,6 +16,7 @@ COLUMNS = [
     ("wall s/strain", "wall_time_per_strain_s"),
     ("steps/strain", "steps_per_strain"),
     ("sweeps/step", "mean_iterations"),
+    ("sweep-equivalents/step", "sweep_equivalents_per_step"),
     ("ns/contact update", "ns_per_contact_update"),
     ("solve %", "solve"),
     ("detect %", "detection"),
@@ -32,6 +33,8 @@ def cell(summary, key):
         part = summary.get(f"time_{key}_s")
         return "-" if part is None or not total else f"{100 * part / total:.0f}"
     value = summary.get(key)
+    if key == "sweep_equivalents_per_step" and value is None:
+        value = summary.get("mean_iterations")  # before skipping: every sweep was full
     if key == "eta":
         if value is None:
             return "jammed" if summary.get("jammed") else "-"
