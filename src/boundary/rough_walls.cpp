@@ -24,7 +24,7 @@ void RoughWalls::solve_block(const std::vector<Contact>& contacts, Bodies& bodie
   double impulse_x = 0.0;
   for (const auto& [index, sign] : top_contacts_) {
     const Contact& c = contacts[index];
-    impulse_x += sign * (c.p_n * c.normal[0] + c.p_t[0]);
+    impulse_x += sign * ((c.p_n + c.p_lub) * c.normal[0] + c.p_t[0]);
   }
   top_.velocity = free_velocity_ + impulse_x / top_.mass;
   for (std::int32_t s : top_.spheres) bodies.velocity[s] = Vec3(top_.velocity, 0.0, 0.0);

@@ -20,9 +20,14 @@ struct Contact {
   double w_n = 0.0;             // normal Delassus coefficient 1/m_i + 1/m_j
   double w_t = 0.0;             // tangential one, adds r^2/I for each sphere
 
+  // Squeeze-film resistance of the pair over the step (fluid/squeeze_film.hpp):
+  // its impulse is -lubrication * u_n at the end of the step (0: none).
+  double lubrication = 0.0;
+
   // Unknowns: impulses over the step, applied to i (and minus to j).
-  double p_n = 0.0;
-  Vec3 p_t = Vec3::Zero();  // perpendicular to normal
+  double p_n = 0.0;         // contact (Signorini), >= 0
+  Vec3 p_t = Vec3::Zero();  // friction, perpendicular to normal
+  double p_lub = 0.0;       // squeeze film along the normal, either sign
 
   // Outcome of the last local solve (for measurements and output).
   double sliding_speed = 0.0;

@@ -10,9 +10,25 @@ FrictionLaw make_friction_law(const FrictionConfig& f, double eta_f) {
     case FrictionLawKind::Coulomb:
       return CoulombLaw{.mu0 = f.mu0, .eta_f = eta_f};
     case FrictionLawKind::Stribeck:
-      return StribeckLaw{.mu0 = f.mu0, .s_c = f.s_c, .s_lim = f.s_lim, .eta_f = eta_f};
+      return StribeckLaw{.mu0 = f.mu0,
+                         .s_c = f.s_c,
+                         .s_lim = f.s_lim,
+                         .eta_f = eta_f,
+                         .viscous_beyond_s_lim = f.viscous_beyond_s_lim};
   }
   return CoulombLaw{.mu0 = f.mu0, .eta_f = eta_f};
+}
+
+std::unique_ptr<SuspendingFluid> make_fluid(const FluidConfig& f, double eta_f) {
+  std::optional<StokesDrag> drag;
+  std::optional<SqueezeFilm> film;
+  if (f.drag == DragKind::Stokes) drag = StokesDrag{.eta_f = eta_f};
+  if (f.lubrication == LubricationKind::Normal)
+    film = SqueezeFilm{.eta_f = eta_f,
+                       .cutoff = f.lubrication_cutoff,
+                       .regularization = f.lubrication_regularization};
+  if (!drag && !film) return nullptr;
+  return std::make_unique<SuspendingFluid>(drag, film);
 }
 
 SolverSettings make_solver_settings(const SolverConfig& s) {

@@ -45,7 +45,9 @@ Scene::Scene(Config config)
     : config_(std::move(config)),
       world_(scene_world(config_)),
       stepper_(make_friction_law(config_.friction, config_.fluid.eta_f),
-               make_solver_settings(config_.solver), scene_dt(config_, world_)) {
+               make_solver_settings(config_.solver), scene_dt(config_, world_)),
+      fluid_(make_fluid(config_.fluid, config_.fluid.eta_f)) {
+  stepper_.set_fluid_forces(fluid_.get());  // a fluid at rest (AmbientShear's default)
   total_steps_ = static_cast<long>(std::ceil(config_.run.time / stepper_.dt() - 1e-9));
 }
 

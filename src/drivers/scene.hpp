@@ -6,8 +6,10 @@
 //
 //     Scene scene(config);                 // reads scene.particles, picks dt
 //     while (!scene.done()) scene.step();
+#include <memory>
 #include <nlohmann/json.hpp>
 
+#include "fluid/suspending_fluid.hpp"
 #include "io/config.hpp"
 #include "solver/time_stepper.hpp"
 
@@ -47,6 +49,7 @@ class Scene {
   Config config_;
   World world_;
   TimeStepper stepper_;
+  std::unique_ptr<SuspendingFluid> fluid_;  // null: no fluid forces
   long total_steps_ = 0;
   StepStatistics statistics_;
   StepReport last_;

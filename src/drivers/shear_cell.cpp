@@ -48,11 +48,13 @@ ShearCell::ShearCell(Config config, ShearCellState state)
     : config_(std::move(config)),
       units_(units_of(config_)),
       state_(std::move(state)),
+      fluid_(make_fluid(config_.fluid, units_.eta_f)),
       stepper_(make_friction_law(config_.friction, units_.eta_f),
                make_solver_settings(config_.solver), state_.dt > 0.0 ? state_.dt : 1.0) {
   // The walls are rough glued grains: Coulomb friction (docs/shear-cell.md).
   state_.walls.set_contact_law(CoulombLaw{config_.cell()->wall_friction, units_.eta_f});
   stepper_.restore_contact_memory(state_.contact_memory);
+  stepper_.set_fluid_forces(fluid_.get());
   cost_.threads = stepper_.settings().threads;
 }
 
@@ -123,6 +125,9 @@ const StepReport& ShearCell::step() {
   // wall's kinetic-energy gain before the contacts act.
   const double drive_work =
       wall.drive_force * s.dt * (wall.velocity + 0.5 * s.dt * wall.drive_force / wall.mass);
+  // The drag is relative to the linear profile between the walls' centres
+  // (fluid/stokes_drag.hpp) at the wall speed of the step's start.
+  if (fluid_) fluid_->set_ambient({.shear_rate = wall.velocity / lz, .z0 = 0.0});
   last_ = stepper_.step(s.world, &s.walls);
   cost_.detection_s += last_.detection_seconds;
   cost_.solve_s += last_.solve_seconds;
@@ -183,6 +188,8 @@ void ShearCell::accumulate(const StepReport& report) {
   a.work_normal += report.contact_work.normal;
   a.work_bl += report.contact_work.tangential_bl;
   a.work_hd += report.contact_work.tangential_hd;
+  a.work_lubrication += report.contact_work.lubrication;
+  a.work_drag += report.drag_work;
   a.iterations += report.solve.iterations;
   a.max_residual = std::max(a.max_residual, report.solve.residual);
   const ContactResidual& r = report.contact_residual;

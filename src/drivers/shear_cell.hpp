@@ -12,10 +12,12 @@
 // Units: code units R = rho_p = tau = 1 inside (measure/cell_units.hpp); the
 // summary reports the paper's units.
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "drivers/shear_cell_state.hpp"
+#include "fluid/suspending_fluid.hpp"
 #include "io/config.hpp"
 #include "measure/cell_units.hpp"
 #include "measure/run_cost.hpp"
@@ -85,6 +87,7 @@ class ShearCell {
   Config config_;
   CellUnits units_;
   ShearCellState state_;
+  std::unique_ptr<SuspendingFluid> fluid_;  // null: the literal model
   TimeStepper stepper_;
   StepReport last_;
   RunCost cost_;

@@ -51,8 +51,11 @@ World build_shear_cell(const Config& config, ShearCellGeometry& geometry, RoughW
   geometry.wall_radius_mean = wall_radius_sum / double(bottom.size() + top.size());
   geometry.gap_height = lz - 2.0 * geometry.wall_radius_mean;
 
-  // Mobile spheres: radii drawn until the next one would overshoot phi.
-  const double target_volume = cell.phi * lx * ly * geometry.gap_height;
+  // Mobile spheres: radii drawn until the next one would overshoot phi, counted
+  // against the volume cell.phi_definition names.
+  const double counted_height =
+      cell.phi_definition == PhiDefinition::Box ? lz : geometry.gap_height;
+  const double target_volume = cell.phi * lx * ly * counted_height;
   std::uniform_real_distribution<double> ur(cell.radius_min, cell.radius_max);
   std::vector<double> radii;
   double volume = 0.0;
@@ -65,6 +68,7 @@ World build_shear_cell(const Config& config, ShearCellGeometry& geometry, RoughW
   geometry.first_mobile = world.bodies.size();
   geometry.mobile_count = radii.size();
   geometry.phi = volume / (lx * ly * geometry.gap_height);
+  geometry.phi_box = volume / (lx * ly * lz);
   std::uniform_real_distribution<double> ux(0.0, lx), uy(0.0, ly),
       uz(cell.radius_max, lz - cell.radius_max);
   for (double r : radii) {

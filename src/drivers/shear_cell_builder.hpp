@@ -25,6 +25,7 @@ struct ShearCellGeometry {
   std::size_t first_mobile = 0;  // bodies [first_mobile, end) are mobile
   double wall_radius_mean = 0.0;
   double phi = 0.0;               // V_mobile / (Lx Ly (Lz - 2 r_w)), as realised
+  double phi_box = 0.0;           // V_mobile / (Lx Ly Lz)
   double gap_height = 0.0;        // Lz - 2 r_w, between the walls' mean surfaces
   std::int64_t growth_steps = 0;  // 64-bit: no padding in the checkpoint's raw bytes
   double max_overlap = 0.0;

@@ -13,8 +13,9 @@ namespace dilatant {
 
 namespace {
 
-// "DILATNT3": time-series rows with the contact residual (2: contact memory with regime)
-constexpr std::uint64_t kMagic = 0x33544e54414c4944ULL;
+// "DILATNT4": rows with the fluid forces' powers, geometry with phi_box (3: rows
+// with the contact residual; 2: contact memory with regime)
+constexpr std::uint64_t kMagic = 0x34544e54414c4944ULL;
 
 // One function serves both directions so the field order cannot diverge.
 template <class Archive, class State>

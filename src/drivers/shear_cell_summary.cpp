@@ -41,6 +41,9 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
       steady_average(s.rows, from, [](const FlowRow& r) { return -r.power_normal; });
   const auto p_bl = steady_average(s.rows, from, [](const FlowRow& r) { return -r.power_bl; });
   const auto p_hd = steady_average(s.rows, from, [](const FlowRow& r) { return -r.power_hd; });
+  const auto p_lubrication =
+      steady_average(s.rows, from, [](const FlowRow& r) { return -r.power_lubrication; });
+  const auto p_drag = steady_average(s.rows, from, [](const FlowRow& r) { return -r.power_drag; });
   const auto p_kinetic =
       steady_average(s.rows, from, [](const FlowRow& r) { return r.power_kinetic; });
   double unconverged = 0.0, iterations = 0.0, steps = 0.0;
@@ -75,8 +78,16 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   j["s_c"] = config.friction.s_c;
   j["s_lim"] = config.friction.s_lim;
   j["friction_law"] = config.friction.law == FrictionLawKind::Coulomb ? "coulomb" : "stribeck";
-  j["phi"] = s.geometry.phi;
+  j["beyond_s_lim"] = config.friction.viscous_beyond_s_lim ? "viscous" : "cap";
+  j["lubrication"] = config.fluid.lubrication == LubricationKind::Normal ? "normal" : "none";
+  j["drag"] = config.fluid.drag == DragKind::Stokes ? "stokes" : "none";
+  // cell.phi counts as cell.phi_definition says; both counts are reported.
+  const bool box = cell.phi_definition == PhiDefinition::Box;
+  j["phi"] = box ? s.geometry.phi_box : s.geometry.phi;
   j["phi_requested"] = cell.phi;
+  j["phi_definition"] = box ? "box" : "between-walls";
+  j["phi_between_walls"] = s.geometry.phi;
+  j["phi_box"] = s.geometry.phi_box;
   j["phi_bulk"] = phi_bulk.mean;  // central half of the gap, steady-state average
   j["phi_bulk_err"] = phi_bulk.error;
   j["mobile_spheres"] = s.geometry.mobile_count;
@@ -137,6 +148,13 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   j["power_friction_bl_err"] = p_bl.error;
   j["power_friction_hd"] = p_hd.mean;
   j["power_friction_hd_err"] = p_hd.error;
+  // The fluid forces (fluid/): squeeze films between close surfaces, and the
+  // drag relative to the walls' linear profile, which may also feed power in
+  // (< 0) where the fluid outruns the particles.
+  j["power_lubrication"] = p_lubrication.mean;
+  j["power_lubrication_err"] = p_lubrication.error;
+  j["power_drag"] = p_drag.mean;
+  j["power_drag_err"] = p_drag.error;
   j["power_kinetic"] = p_kinetic.mean;  // d(KE)/dt
   j["power_kinetic_err"] = p_kinetic.error;
   // |F_t| v_s at particle-particle contacts: the continuous sliding dissipation.

@@ -21,12 +21,13 @@
 //
 // which is unconditionally stable and reaches the exact steady states (a
 // sphere sedimenting under gravity ends at U + m g / zeta for any dt);
-// fluid/implicit_drag.hpp applies it. Pair forces (squeeze film between two
-// close surfaces, linear in their relative normal velocity) will enter the same
-// implicit step as elements of the Gauss–Seidel sweep next to the contacts
-// (docs/architecture.md); the interface below has only the body terms so far.
+// fluid/implicit_drag.hpp applies it. Pair forces (the squeeze film between two
+// close surfaces, linear in their relative normal velocity) enter the same
+// implicit step as part of each pair's local problem in the Gauss–Seidel sweep
+// (fluid/squeeze_film.hpp, solver/local_problem.hpp).
 #include <vector>
 
+#include "detection/contact.hpp"
 #include "geometry/vec3.hpp"
 #include "world/world.hpp"
 
@@ -55,6 +56,11 @@ class FluidForces {
   // The drag on each body for the step about to be taken (world as predicted:
   // positions and velocities at the start of the step). Leave `drag` empty for none.
   virtual void body_drag(const World& world, BodyDrag& drag) const = 0;
+  // Pair forces: the largest surface gap they act across (the contact detector
+  // looks at least that far), and each found pair's coefficient for the step
+  // (Contact::lubrication). None by default.
+  virtual double pair_range(const World& /*world*/) const { return 0.0; }
+  virtual void pair_resistance(std::vector<Contact>& /*contacts*/, double /*dt*/) const {}
 };
 
 }  // namespace dilatant

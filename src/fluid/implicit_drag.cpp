@@ -25,6 +25,8 @@ void ImplicitDrag::predict(const BodyDrag& drag, double dt, Bodies& b) {
   check_size(drag.fluid_spin, n, "fluid_spin");
   inv_mass_ = b.inv_mass;
   inv_inertia_ = b.inv_inertia;
+  velocity_ = b.velocity;
+  angular_velocity_ = b.angular_velocity;
   active_ = true;
   for (std::size_t i = 0; i < n; ++i) {
     if (b.is_fixed(i)) continue;
@@ -43,6 +45,25 @@ void ImplicitDrag::predict(const BodyDrag& drag, double dt, Bodies& b) {
       inv_inertia_[i] = 1.0 / (inertia + damping);
     }
   }
+}
+
+double ImplicitDrag::work(const BodyDrag& drag, double dt, const Bodies& b) const {
+  if (velocity_.size() != b.size()) return 0.0;  // predict() has not run
+  double w = 0.0;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    if (b.is_fixed(i)) continue;
+    if (!drag.translational.empty()) {
+      const Vec3 u = drag.fluid_velocity.empty() ? Vec3::Zero() : drag.fluid_velocity[i];
+      const Vec3 impulse = -dt * drag.translational[i] * (b.velocity[i] - u);
+      w += 0.5 * impulse.dot(velocity_[i] + b.velocity[i]);
+    }
+    if (!drag.rotational.empty()) {
+      const Vec3 omega = drag.fluid_spin.empty() ? Vec3::Zero() : drag.fluid_spin[i];
+      const Vec3 impulse = -dt * drag.rotational[i] * (b.angular_velocity[i] - omega);
+      w += 0.5 * impulse.dot(angular_velocity_[i] + b.angular_velocity[i]);
+    }
+  }
+  return w;
 }
 
 void ImplicitDrag::use_effective_masses(Bodies& b) {

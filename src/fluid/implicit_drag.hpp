@@ -25,10 +25,23 @@ class ImplicitDrag {
   void use_effective_masses(Bodies& bodies);
   void restore_masses(Bodies& bodies);
 
+  // Whether predict() ran in this step (until restore_masses()).
+  bool active() const { return active_; }
+  // The velocities predict() found, before the drag acted.
+  const std::vector<Vec3>& predicted_velocity() const { return velocity_; }
+  const std::vector<Vec3>& predicted_angular_velocity() const { return angular_velocity_; }
+  // The drag's work over the step, given the end-of-step velocities in `bodies`:
+  //     sum_i J_i . (v_i,pred + v_i,end) / 2,   J_i = -dt zeta_i (v_i,end - U_i)
+  // (and alike for rotation). Since m (v_end - v_pred) = J_drag + J_contacts
+  // exactly, this and the contacts' work taken from the predicted velocities
+  // (solver/contact_work.hpp) add up to KE(end) - KE(pred) to round-off.
+  double work(const BodyDrag& drag, double dt, const Bodies& bodies) const;
+
  private:
   bool active_ = false;
   bool swapped_ = false;
-  std::vector<double> inv_mass_, inv_inertia_;  // the other set of the two
+  std::vector<double> inv_mass_, inv_inertia_;     // the other set of the two
+  std::vector<Vec3> velocity_, angular_velocity_;  // predicted, before the drag
 };
 
 }  // namespace dilatant

@@ -18,7 +18,8 @@ double StribeckLaw::hydrodynamic_mu(double s) {
 
 double StribeckLaw::mu(double s) const {
   if (s < s_c) return mu0;
-  return hydrodynamic_mu(s < s_lim ? s : s_lim);
+  if (s < s_lim) return hydrodynamic_mu(s);
+  return viscous_beyond_s_lim ? hydrodynamic_mu(s_lim) * (s / s_lim) : hydrodynamic_mu(s_lim);
 }
 
 double StribeckLaw::hydrodynamic_root(const TangentialProblem& p, double k, double lo) const {
@@ -26,13 +27,14 @@ double StribeckLaw::hydrodynamic_root(const TangentialProblem& p, double k, doub
   const double wp = p.compliance * p.normal_impulse;
   double hi = p.free_slip;
   // f and f' from one logarithm: mu = 2 pi s L, dmu/ds = 2 pi (L - 1), L = ln(a/s);
-  // beyond s_lim mu is the constant cap.
+  // beyond s_lim mu is the constant cap, or its viscous continuation mu_cap s/s_lim.
   const double mu_cap = hydrodynamic_mu(s_lim);
+  const double viscous_slope = viscous_beyond_s_lim ? mu_cap / s_lim : 0.0;  // d mu / ds
   const auto f_and_slope = [&](double v, double& slope) {
     const double s = sommerfeld_number(k, v);
     if (s >= s_lim) {
-      slope = 1.0;
-      return v + wp * mu_cap - p.free_slip;
+      slope = 1.0 + wp * k * viscous_slope;
+      return v + wp * (viscous_beyond_s_lim ? viscous_slope * s : mu_cap) - p.free_slip;
     }
     const double log_term = std::log(kLubricationScale / s);
     slope = 1.0 + wp * k * kTwoPi * (log_term - 1.0);
@@ -44,7 +46,7 @@ double StribeckLaw::hydrodynamic_root(const TangentialProblem& p, double k, doub
   double v = p.slip_hint;
   if (!(v > lo && v < hi)) {
     const double s_free = sommerfeld_number(k, p.free_slip);
-    v = p.free_slip - wp * (s_free < s_lim ? hydrodynamic_mu(s_free) : mu_cap);
+    v = p.free_slip - wp * mu(s_free);
   }
   if (!(v > lo && v < hi)) v = 0.5 * (lo + hi);
   for (int it = 0; it < 100; ++it) {

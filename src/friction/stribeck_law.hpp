@@ -5,6 +5,13 @@
 //     mu(s) = 2 pi s ln(5 / (6 pi s))    s_c <= s < s_lim    hydrodynamic (HD)
 //     mu(s) = mu(s_lim)                  s >= s_lim          outside lubrication theory
 //
+// or, with `viscous_beyond_s_lim` (friction.beyond_s_lim = "viscous"), the
+// viscous continuation mu(s) = mu(s_lim) s / s_lim: since s = eta_f R_p v_s / N,
+// the friction force is then F_t = mu(s_lim) eta_f R_p v_s / s_lim, linear in
+// the sliding speed and independent of the load -- a lubricated contact that
+// slides fast carries a viscous shear force, not a dry one. Continuous at s_lim,
+// and increasing, so the HD root below stays unique.
+//
 // Because mu depends on the sliding speed, one contact's local problem can have
 // several consistent answers. We resolve it deterministically (docs/model.md "Friction"):
 //   1. stick, if the sticking impulse |u_t_free|/w_t lies in the mu0 cone;
@@ -43,7 +50,8 @@ struct StribeckLaw {
   double mu0 = friction_defaults::kMu0;
   double s_c = friction_defaults::kSc;
   double s_lim = friction_defaults::kSlim;
-  double eta_f = 0.0;  // fluid viscosity, in the units of the simulation
+  double eta_f = 0.0;                 // fluid viscosity, in the units of the simulation
+  bool viscous_beyond_s_lim = false;  // false: the cap (the paper's literal law)
 
   // Lubrication-theory friction (paper, Supplemental Material), no cap.
   static double hydrodynamic_mu(double s);

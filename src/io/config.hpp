@@ -31,6 +31,11 @@
 namespace dilatant {
 
 enum class FrictionLawKind { Stribeck, Coulomb };
+// Fluid forces beyond the Stribeck friction (fluid/): none is the paper's literal model.
+enum class LubricationKind { None, Normal };
+enum class DragKind { None, Stokes };
+// What cell.phi counts the mobile spheres' volume against.
+enum class PhiDefinition { BetweenWalls, Box };
 
 struct PlaneConfig {
   Vec3 point = Vec3::Zero();
@@ -49,6 +54,7 @@ struct SceneConfig {
 struct CellConfig {
   Vec3 size{25.0, 10.0, 27.0};
   double phi = 0.58;
+  PhiDefinition phi_definition = PhiDefinition::BetweenWalls;
   double radius_min = 0.8;
   double radius_max = 1.0;
   std::int64_t seed = 1;
@@ -65,11 +71,17 @@ struct FrictionConfig {
   double mu0 = friction_defaults::kMu0;
   double s_c = friction_defaults::kSc;
   double s_lim = friction_defaults::kSlim;
+  bool viscous_beyond_s_lim = false;  // beyond_s_lim = "viscous" (friction/stribeck_law.hpp)
 };
 
 struct FluidConfig {
   double lambda = 10.0;  // shear cell: eta_f = sqrt(tau rho_p) R / lambda
   double eta_f = 0.0;    // scene: the fluid viscosity itself
+  // fluid/squeeze_film.hpp and fluid/stokes_drag.hpp; lengths in mean radii.
+  LubricationKind lubrication = LubricationKind::None;
+  double lubrication_cutoff = 0.5;
+  double lubrication_regularization = 1e-3;
+  DragKind drag = DragKind::None;
 };
 
 struct SolverConfig {

@@ -115,6 +115,40 @@ ConfigKey vec3(std::string_view section, std::string_view name, RunMode mode, Ge
                    }};
 }
 
+// A key that takes one of a few words, each standing for a value of `member`.
+template <class S, class E>
+ConfigKey choice(std::string_view section, std::string_view name, RunMode mode, Get<S> get,
+                 E S::*member, std::vector<std::pair<std::string_view, E>> words,
+                 std::string_view doc) {
+  std::string range;
+  for (std::size_t w = 0; w < words.size(); ++w) {
+    if (w > 0) range += w + 1 == words.size() ? " or " : ", ";
+    range += fmt::format("\"{}\"", words[w].first);
+  }
+  const auto word_of = [words](E value) {
+    for (const auto& [word, v] : words)
+      if (v == value) return std::string(word);
+    return std::string(words.front().first);
+  };
+  return ConfigKey{
+      section,
+      name,
+      mode,
+      "string",
+      "",
+      range,
+      doc,
+      [=](const Section& s, Config& c, const std::filesystem::path&) {
+        E& v = get(c).*member;
+        const std::string read = s.string(name, word_of(v));
+        bool known = false;
+        for (const auto& [word, value] : words)
+          if (read == word) v = value, known = true;
+        config_detail::check(s, name, read, known, "must be " + range);
+      },
+      [=](const Config& c, toml::table& t) { t.insert(name, word_of(get(mut(c)).*member)); }};
+}
+
 std::vector<ConfigKey> make_keys() {
   using enum RunMode;
   const auto positive = [](const Vec3& v) { return (v.array() > 0.0).all(); };
@@ -125,8 +159,12 @@ std::vector<ConfigKey> make_keys() {
                    "every length must be > 0", "> 0 each", "R",
                    "Lx, Ly, Lz; periodic in x and y; Lz is the distance between the wall planes"));
   k.push_back(number("cell", "phi", Cell, &cell, &CellConfig::phi, open(0.0, 0.74), "",
-                     "volume fraction of the mobile spheres between the walls' mean surfaces "
+                     "volume fraction of the mobile spheres, counted as cell.phi_definition says "
                      "(0.74: the densest packing of spheres)"));
+  k.push_back(choice("cell", "phi_definition", Cell, &cell, &CellConfig::phi_definition,
+                     {{"between-walls", PhiDefinition::BetweenWalls}, {"box", PhiDefinition::Box}},
+                     "the volume cell.phi counts against: between the walls' mean surfaces, or "
+                     "Lx Ly Lz (docs/model.md \"Volume fraction\"); summary.json reports both"));
   k.push_back(number("cell", "radius_min", Cell, &cell, &CellConfig::radius_min, above(0.0), "R",
                      "radii are uniform in [radius_min, radius_max]"));
   k.push_back(number("cell", "radius_max", Cell, &cell, &CellConfig::radius_max, Range{}, "R",
@@ -208,20 +246,11 @@ std::vector<ConfigKey> make_keys() {
       },
       [](const Config& c, toml::table& t) { t.insert("density", c.density); }});
   // [friction] (docs/model.md "Friction"; paper Eq. 1)
-  k.push_back(ConfigKey{
-      "friction", "law", Any, "string", "", "\"stribeck\" or \"coulomb\"",
-      "stribeck: BL or HD by the Sommerfeld number; coulomb: always mu0 (the control without "
-      "hydrodynamics)",
-      [](const Section& s, Config& c, const std::filesystem::path&) {
-        const auto law =
-            s.string("law", c.friction.law == FrictionLawKind::Coulomb ? "coulomb" : "stribeck");
-        config_detail::check(s, "law", law, law == "stribeck" || law == "coulomb",
-                             "must be \"stribeck\" or \"coulomb\"");
-        c.friction.law = law == "coulomb" ? FrictionLawKind::Coulomb : FrictionLawKind::Stribeck;
-      },
-      [](const Config& c, toml::table& t) {
-        t.insert("law", c.friction.law == FrictionLawKind::Coulomb ? "coulomb" : "stribeck");
-      }});
+  k.push_back(
+      choice("friction", "law", Any, &friction, &FrictionConfig::law,
+             {{"stribeck", FrictionLawKind::Stribeck}, {"coulomb", FrictionLawKind::Coulomb}},
+             "stribeck: BL or HD by the Sommerfeld number; coulomb: always mu0 (the "
+             "control without hydrodynamics)"));
   k.push_back(number("friction", "mu0", Any, &friction, &FrictionConfig::mu0, at_least(0.0), "",
                      "boundary-lubricated friction coefficient"));
   k.push_back(number("friction", "s_c", Any, &friction, &FrictionConfig::s_c,
@@ -231,12 +260,30 @@ std::vector<ConfigKey> make_keys() {
   k.push_back(number("friction", "s_lim", Any, &friction, &FrictionConfig::s_lim,
                      Range{-kInf, kSommerfeldMax, true, true, "5/(6 pi) ~ 0.2653",
                            ": the HD friction would be negative beyond"},
-                     "", "beyond it mu is held at mu(s_lim) (> s_c)"));
+                     "", "where lubrication theory ends (> s_c); see beyond_s_lim"));
+  k.push_back(choice("friction", "beyond_s_lim", Any, &friction,
+                     &FrictionConfig::viscous_beyond_s_lim, {{"cap", false}, {"viscous", true}},
+                     "cap: mu held at mu(s_lim) (the paper); viscous: mu(s_lim) s / s_lim, a "
+                     "friction force linear in the sliding speed (friction/stribeck_law.hpp)"));
   // [fluid]
   k.push_back(number("fluid", "lambda", Cell, &fluid, &FluidConfig::lambda, above(0.0), "",
                      "sqrt(tau rho_p) R / eta_f: the cell's eta_f = 1/lambda in code units"));
   k.push_back(number("fluid", "eta_f", Scene, &fluid, &FluidConfig::eta_f, at_least(0.0),
-                     "the scene's units", "fluid viscosity (read by the Stribeck law only)"));
+                     "the scene's units", "fluid viscosity (Stribeck law and fluid forces)"));
+  k.push_back(choice("fluid", "lubrication", Any, &fluid, &FluidConfig::lubrication,
+                     {{"none", LubricationKind::None}, {"normal", LubricationKind::Normal}},
+                     "normal: squeeze film 6 pi eta_f a*^2 u_n / (h + delta) between close "
+                     "surfaces, implicit (fluid/squeeze_film.hpp); none: the literal model"));
+  k.push_back(number("fluid", "lubrication_cutoff", Any, &fluid, &FluidConfig::lubrication_cutoff,
+                     above(0.0), "mean radii", "largest gap h with a squeeze film (LF-DEM: 0.5)"));
+  k.push_back(number("fluid", "lubrication_regularization", Any, &fluid,
+                     &FluidConfig::lubrication_regularization, above(0.0), "mean radii",
+                     "delta, which keeps the film finite at contact (LF-DEM: 1e-3)"));
+  k.push_back(
+      choice("fluid", "drag", Any, &fluid, &FluidConfig::drag,
+             {{"none", DragKind::None}, {"stokes", DragKind::Stokes}},
+             "stokes: -6 pi eta_f r (v - U), torque -8 pi eta_f r^3 (w - Omega), U the "
+             "walls' linear profile in a cell, at rest in a scene (fluid/stokes_drag.hpp)"));
   // [solver] (solver/contact_solver.hpp)
   k.push_back(number("solver", "dt", Any, &solver, &SolverConfig::dt,
                      at_least(0.0, " (0 = automatic)"), "time",
@@ -261,22 +308,10 @@ std::vector<ConfigKey> make_keys() {
                      open(0.0, 2.0), "",
                      "over-relaxation of the normal impulses; same converged answer, fewer "
                      "sweeps (paper cell 229 -> 145 with coulomb 0.3); 1.6 stalls"));
-  k.push_back(ConfigKey{
-      "solver", "acceleration", Any, "string", "", "\"none\" or \"cg\"",
-      "none: projected Gauss-Seidel sweeps; cg: the nonsmooth nonlinear conjugate gradient "
-      "on top of them (Silcowitz et al. 2010; same answer)",
-      [](const Section& s, Config& c, const std::filesystem::path&) {
-        const auto a =
-            s.string("acceleration",
-                     c.solver.acceleration == Acceleration::ConjugateGradient ? "cg" : "none");
-        config_detail::check(s, "acceleration", a, a == "none" || a == "cg",
-                             "must be \"none\" or \"cg\"");
-        c.solver.acceleration = a == "cg" ? Acceleration::ConjugateGradient : Acceleration::None;
-      },
-      [](const Config& c, toml::table& t) {
-        t.insert("acceleration",
-                 c.solver.acceleration == Acceleration::ConjugateGradient ? "cg" : "none");
-      }});
+  k.push_back(choice("solver", "acceleration", Any, &solver, &SolverConfig::acceleration,
+                     {{"none", Acceleration::None}, {"cg", Acceleration::ConjugateGradient}},
+                     "none: projected Gauss-Seidel sweeps; cg: the nonsmooth nonlinear conjugate "
+                     "gradient on top of them (Silcowitz et al. 2010; same answer)"));
   k.push_back(ConfigKey{
       "solver", "skip_open_contacts", Any, "boolean", "", "true or false",
       "sweeps between full ones visit only the contacts loaded after the last full sweep; "

@@ -76,6 +76,13 @@ void check_constraints(const std::function<Section(std::string_view)>& section, 
             fmt::format("must be > run.transient_strain = {}", c.run.transient_strain));
   }
   if (const SceneConfig* scene = c.scene()) {
+    const Section fl = section("fluid");
+    // A fluid force of a fluid without viscosity would silently be none.
+    if (c.fluid.eta_f <= 0.0) {
+      check(fl, "drag", "stokes", c.fluid.drag == DragKind::None, "needs fluid.eta_f > 0");
+      check(fl, "lubrication", "normal", c.fluid.lubrication == LubricationKind::None,
+            "needs fluid.eta_f > 0");
+    }
     const Section s = section("scene");
     for (int axis = 0; axis < 3; ++axis)
       check(s, "box", scene->box,

@@ -43,6 +43,8 @@ FlowRow IntervalSums::close(double t, double strain) const {
   r.power_normal = work_normal / time;
   r.power_bl = work_bl / time;
   r.power_hd = work_hd / time;
+  r.power_lubrication = work_lubrication / time;
+  r.power_drag = work_drag / time;
   r.power_kinetic = (kinetic_end - kinetic_start) / time;
   r.mean_iterations = iterations / steps;
   r.max_residual = max_residual;

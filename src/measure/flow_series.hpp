@@ -35,6 +35,7 @@ struct FlowRow {
   // Powers: drive, contact work by kind (< 0: dissipation; solver/contact_work.hpp),
   // and the rate of change of the total kinetic energy (particles and wall).
   double power_drive = 0.0, power_normal = 0.0, power_bl = 0.0, power_hd = 0.0;
+  double power_lubrication = 0.0, power_drag = 0.0;  // fluid forces (fluid/)
   double power_kinetic = 0.0;
 };
 
@@ -52,6 +53,7 @@ struct IntervalSums {
   double contact_residual_max = 0.0, contact_residual_rms = 0.0;  // max; sum over steps
   double max_overlap = 0.0;
   double work_drive = 0.0, work_normal = 0.0, work_bl = 0.0, work_hd = 0.0;
+  double work_lubrication = 0.0, work_drag = 0.0;
   double kinetic_start = 0.0, kinetic_end = 0.0;  // total, particles and wall
 
   FlowRow close(double t, double strain) const;

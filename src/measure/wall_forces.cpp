@@ -10,8 +10,9 @@ WallForces wall_forces(std::span<const BodyGroup> group, const std::vector<Conta
     if (g == BodyGroup::TopWall) f.top += force;
   };
   for (const Contact& c : contacts) {
-    if (c.p_n <= 0.0) continue;
-    const Vec3 on_i = (c.p_n * c.normal + c.p_t) / dt;
+    if (c.p_n <= 0.0 && c.p_lub == 0.0) continue;
+    // Contact and squeeze film alike: the wall feels every force of the pair.
+    const Vec3 on_i = ((c.p_n + c.p_lub) * c.normal + c.p_t) / dt;
     add(group[c.i], on_i);
     if (c.with_plane()) {
       // Safety plane 0 is the bottom wall's, plane 1 the top wall's.

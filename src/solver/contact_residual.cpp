@@ -23,14 +23,15 @@ void add_range(std::span<const Contact> contacts, const Bodies& b, const Law& la
   const double inv_dt = 1.0 / dt;
   for (const Contact& c : contacts) {
     const LocalAnswer a = solve_local(c, b, law, dt, inv_dt, 1.0, imposed_branch(c, true));
-    const double dn = std::abs(a.p_n - c.p_n);
+    const double dn = std::abs(a.p_n + a.p_lub - c.p_n - c.p_lub);
     const double dp_t = (a.p_t - c.p_t).norm();
     s.normal_max = std::max(s.normal_max, dn);
     s.tangential_max = std::max(s.tangential_max, dp_t);
     s.normal_squared += dn * dn;
     s.tangential_squared += dp_t * dp_t;
-    if (c.p_n > 0.0) {
-      s.impulse_squared += c.p_n * c.p_n + c.p_t.squaredNorm();
+    if (c.p_n > 0.0 || c.p_lub != 0.0) {
+      const double normal = c.p_n + c.p_lub;
+      s.impulse_squared += normal * normal + c.p_t.squaredNorm();
       s.loaded += 1.0;
     }
   }

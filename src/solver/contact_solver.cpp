@@ -25,17 +25,21 @@ SweepChange sweep(std::span<Contact> contacts, const std::vector<std::int32_t>* 
     const double p_n = a.p_n;
     const Vec3& p_t = a.p_t;
     const TangentialSolution& t = a.tangential;
-    const Vec3 dp = (p_n - c.p_n) * c.normal + (p_t - c.p_t);
+    // The film and the contact act along the same normal: their sum is the
+    // pair's normal impulse, whose change the tolerance measures.
+    const double normal = p_n + a.p_lub;
+    const Vec3 dp = (normal - c.p_n - c.p_lub) * c.normal + (p_t - c.p_t);
     apply_impulse(c, dp, b);
     if (changes != nullptr) changes[k] = dp;
     c.p_n = p_n;
     c.p_t = p_t;
+    c.p_lub = a.p_lub;
     c.sliding_speed = t.sliding_speed;
     c.sommerfeld = t.sommerfeld;
     c.regime = t.regime;
     change.change_squared += dp.squaredNorm();
-    change.impulse_squared += p_n * p_n + p_t.squaredNorm();
-    if (loaded != nullptr && (p_n > 0.0 || p_t.squaredNorm() > 0.0))
+    change.impulse_squared += normal * normal + p_t.squaredNorm();
+    if (loaded != nullptr && (p_n > 0.0 || a.p_lub != 0.0 || p_t.squaredNorm() > 0.0))
       loaded->push_back(static_cast<std::int32_t>(k));
   };
   if (only == nullptr) {
@@ -50,7 +54,7 @@ SweepChange sweep(std::span<Contact> contacts, const std::vector<std::int32_t>* 
 }  // namespace
 
 void apply_impulses(const std::vector<Contact>& contacts, Bodies& bodies) {
-  for (const Contact& c : contacts) apply_impulse(c, c.p_n * c.normal + c.p_t, bodies);
+  for (const Contact& c : contacts) apply_impulse(c, (c.p_n + c.p_lub) * c.normal + c.p_t, bodies);
 }
 
 namespace {
@@ -95,7 +99,9 @@ void conjugate_gradient_step(std::vector<Contact>& contacts, Bodies& bodies,
     if (beta > 0.0) {
       const Vec3 step = beta * direction[k];
       const double step_n = step.dot(c.normal);
-      c.p_n += step_n;
+      // A pair with a squeeze film: the step moves the film's impulse, and the
+      // next visit splits the normal impulse between film and contact exactly.
+      (c.lubrication > 0.0 ? c.p_lub : c.p_n) += step_n;
       c.p_t += step - step_n * c.normal;
       apply_impulse(c, step, bodies);
       direction[k] = step + changes[k];

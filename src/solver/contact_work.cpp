@@ -8,9 +8,11 @@ ContactWork contact_work(const std::vector<Contact>& contacts,
   ContactWork w;
   for (std::size_t k = 0; k < contacts.size(); ++k) {
     const Contact& c = contacts[k];
-    if (c.p_n <= 0.0 && c.p_t.squaredNorm() == 0.0) continue;
+    if (c.p_n <= 0.0 && c.p_lub == 0.0 && c.p_t.squaredNorm() == 0.0) continue;
     const Vec3 mean = 0.5 * (free_velocity[k] + end_velocity[k]);
-    w.normal += c.p_n * c.normal.dot(mean);
+    const double mean_n = c.normal.dot(mean);
+    w.normal += c.p_n * mean_n;
+    w.lubrication += c.p_lub * mean_n;
     const double tangential = c.p_t.dot(mean);
     if (c.regime == Regime::Hydrodynamic) {
       w.tangential_hd += tangential;

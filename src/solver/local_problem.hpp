@@ -54,23 +54,56 @@ inline FrictionBranch imposed_branch(const Contact& c, bool frozen) {
 struct LocalAnswer {
   double p_n = 0.0;
   Vec3 p_t = Vec3::Zero();
+  double p_lub = 0.0;
   TangentialSolution tangential;
 };
 
+// The normal part of a pair with a squeeze film, k = c.lubrication (> 0), the
+// other contacts frozen. Its impulse is p_lub = -k u_n+ (fluid/squeeze_film.hpp)
+// and u_n+ = u_n_free + w_n (p_n + p_lub), so with the contact open (p_n = 0)
+//     u_n+ = u_n_free / (1 + w_n k).
+// If that keeps the gap open at the end of the step (g + dt u_n+ >= 0) it is the
+// answer. Otherwise the surfaces touch: u_n+ = -g/dt, the film carries
+// p_lub = k g/dt and the contact the rest,
+//     p_n = (-g/dt - u_n_free) / w_n - k g/dt,
+// which is > 0 exactly when the open answer failed (for g >= 0). A touching pair
+// thus takes its film's resistance up to contact and Signorini's beyond: the
+// hard-sphere limit of a film regularised by delta (no singularity at h = 0).
+struct NormalAnswer {
+  double p_n = 0.0;
+  double p_lub = 0.0;
+};
+inline NormalAnswer solve_normal_with_film(double u_n_free, double gap, double w_n, double k,
+                                           double dt, double inv_dt) {
+  const double u_open = u_n_free / (1.0 + w_n * k);
+  if (gap + dt * u_open >= 0.0) return {0.0, -k * u_open};
+  const double u_touch = -gap * inv_dt;
+  const double p_lub = -k * u_touch;
+  return {std::max(0.0, (u_touch - u_n_free) / w_n - p_lub), p_lub};
+}
+
 // The local answer of contact c, over-relaxed in its normal part by `relaxation`
-// (1: the exact local solution).
+// (1: the exact local solution). The squeeze film's impulse is always exact.
 template <class Law>
 inline LocalAnswer solve_local(const Contact& c, const Bodies& b, const Law& law, double dt,
                                double inv_dt, double relaxation, FrictionBranch branch) {
   const Vec3 u = relative_velocity(c, b);
   const double u_n = u.dot(c.normal);
-  // Free velocities: remove this contact's own current impulse.
-  const double u_n_free = u_n - c.w_n * c.p_n;
+  // Free velocities: remove this contact's own current impulses.
+  const double u_n_free = u_n - c.w_n * (c.p_n + c.p_lub);
   const Vec3 u_t_free = (u - u_n * c.normal) - c.w_t * c.p_t;
 
   // Over-relaxed normal impulse (SOR); the fixed point is Gauss–Seidel's.
   LocalAnswer a;
-  const double p_n_exact = std::max(0.0, -(u_n_free + c.gap * inv_dt) / c.w_n);
+  double p_n_exact;
+  if (c.lubrication > 0.0) {
+    const NormalAnswer n =
+        solve_normal_with_film(u_n_free, c.gap, c.w_n, c.lubrication, dt, inv_dt);
+    p_n_exact = n.p_n;
+    a.p_lub = n.p_lub;
+  } else {
+    p_n_exact = std::max(0.0, -(u_n_free + c.gap * inv_dt) / c.w_n);
+  }
   a.p_n = std::max(0.0, c.p_n + relaxation * (p_n_exact - c.p_n));
   const double free_slip = u_t_free.norm();
   a.tangential = law.solve(

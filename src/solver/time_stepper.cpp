@@ -84,23 +84,37 @@ StepReport TimeStepper::step(World& world, Boundary* boundary) {
     b.velocity[i] += dt_ * a;
   }
   if (boundary != nullptr) boundary->predict(b, dt_);
+  // The kinetic energy before any force of the step's implicit problem (drag,
+  // films, contacts) acts: their works add up to KE(end) minus this.
+  report.kinetic_energy_free = b.kinetic_energy();
+  drag_.clear();
   if (fluid_ != nullptr) {
-    drag_.clear();
     fluid_->body_drag(world, drag_);
     if (!drag_.empty()) implicit_drag_.predict(drag_, dt_, b);
   }
-  report.kinetic_energy_free = b.kinetic_energy();
 
   // 2. detect, 3. warm start, 4. solve (with the effective masses of the
   // implicit drag, if any)
   using Clock = std::chrono::steady_clock;
   const auto detection_start = Clock::now();
   implicit_drag_.use_effective_masses(b);
-  detector_.detect(world, detection_margin(world), contacts_, settings_.threads);
+  const double pair_range = fluid_ != nullptr ? fluid_->pair_range(world) : 0.0;
+  detector_.detect(world, std::max(detection_margin(world), pair_range), contacts_,
+                   settings_.threads);
+  if (pair_range > 0.0) fluid_->pair_resistance(contacts_, dt_);
   const std::span<const BodyGroup> boundary_bodies =
       boundary != nullptr ? boundary->body_groups() : std::span<const BodyGroup>{};
   slabs_ = partition_into_slabs(contacts_, world, boundary_bodies, scratch_);
-  relative_velocities(b, free_velocity_);
+  // The contacts' work is taken from the velocities before the drag acted
+  // (fluid/implicit_drag.hpp), so that it and the drag's work add up exactly.
+  if (implicit_drag_.active()) {
+    predicted_bodies_ = b;
+    predicted_bodies_.velocity = implicit_drag_.predicted_velocity();
+    predicted_bodies_.angular_velocity = implicit_drag_.predicted_angular_velocity();
+    relative_velocities(predicted_bodies_, free_velocity_);
+  } else {
+    relative_velocities(b, free_velocity_);
+  }
   warm_start(b);
   const auto solve_start = Clock::now();
   if (boundary != nullptr) boundary->begin_solve(contacts_);
@@ -115,6 +129,7 @@ StepReport TimeStepper::step(World& world, Boundary* boundary) {
                                              boundary != nullptr ? boundary->contact_law() : law_,
                                              dt_, settings_.threads);
   implicit_drag_.restore_masses(b);
+  if (!drag_.empty()) report.drag_work = implicit_drag_.work(drag_, dt_, b);
 
   const auto solve_end = Clock::now();
   report.detection_seconds = std::chrono::duration<double>(solve_start - detection_start).count();

@@ -4,7 +4,8 @@
 //   1. predict    v_free = v + dt (g + F_ext/m)          (no contacts);
 //                 the boundary's own free motion (boundary/boundary.hpp);
 //                 the fluid's implicit drag (fluid/fluid_forces.hpp)
-//   2. detect     contacts whose gap may close within the step (cell list)
+//   2. detect     contacts whose gap may close within the step (cell list),
+//                 and pairs within reach of the fluid's squeeze films
 //   3. warm start impulses of contacts that existed last step
 //   4. solve      nonlinear Gauss–Seidel until the impulses converge, the
 //                 boundary's block solved after every sweep; then the residual
@@ -36,10 +37,11 @@ struct StepReport {
   ContactResidual contact_residual;  // of the impulses the solve ended with
   std::size_t contacts_detected = 0;
   std::size_t contacts_closed = 0;   // contacts carrying a normal impulse
-  double kinetic_energy_free = 0.0;  // after prediction, before contacts act
+  double kinetic_energy_free = 0.0;  // after prediction, before drag and contacts act
   double kinetic_energy = 0.0;       // at the end of the step
   double max_overlap = 0.0;          // largest overlap at the end of the step
-  ContactWork contact_work;          // exact split of KE(end) - KE(free) by contact kind
+  ContactWork contact_work;          // KE(end) - KE(free) by contact kind ...
+  double drag_work = 0.0;            // ... and the drag's share (fluid/implicit_drag.hpp)
   double detection_seconds = 0.0;    // stages 2-3: detection, slab order, warm start
   double solve_seconds = 0.0;        // stage 4
 };
@@ -82,6 +84,7 @@ class TimeStepper {
   const FluidForces* fluid_ = nullptr;
   BodyDrag drag_;  // of the current step, reused
   ImplicitDrag implicit_drag_;
+  Bodies predicted_bodies_;  // before the drag, for contact_work (reused)
   SlabPartition slabs_;
   std::vector<Contact> scratch_;  // reused by partition_into_slabs
   SolverSettings settings_;

@@ -46,10 +46,10 @@ TEST(Checkpoint, AnOlderFormatIsNamedAsSuch) {
   {
     std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
     f.seekp(7);
-    f.put('2');  // "DILATNT2": the format before the residual columns
+    f.put('3');  // "DILATNT3": the format before the fluid forces
   }
-  EXPECT_NE(message_of(file).find("checkpoint of an older dilatant (format 2; this version reads "
-                                  "format 3)"),
+  EXPECT_NE(message_of(file).find("checkpoint of an older dilatant (format 3; this version reads "
+                                  "format 4)"),
             std::string::npos)
       << message_of(file);
   {
