@@ -9,6 +9,7 @@
 #include "io/contacts_csv.hpp"
 #include "io/vtk_writer.hpp"
 #include "measure/rheology.hpp"
+#include "measure/steadiness.hpp"
 
 namespace dilatant {
 
@@ -65,9 +66,19 @@ std::string ShearCell::progress_line(double elapsed) const {
   const double gdot = shear_rate(v, config_.cell()->size[2]);
   const double done = s.strain / config_.run.strain;
   const double left = done > 0.0 ? elapsed * (1.0 - done) / done : 0.0;
-  return fmt::format("strain {:6.2f}/{:.2f}  gamma_dot {:9.3g}  eta {:9.3g}  left {:5.0f} s ",
+  // Whether the averages can be trusted yet (measure/steadiness.hpp).
+  std::string state;
+  if (s.strain <= config_.run.transient_strain) {
+    state = "transient";
+  } else if (const Drift d = wall_speed_drift(s.rows, config_.run.transient_strain);
+             d.known && !d.steady) {
+    state = fmt::format("not yet steady: wall speed {:+.0f}% +- {:.0f}%", 100.0 * d.change,
+                        100.0 * d.error);
+  }
+  return fmt::format("strain {:6.2f}/{:.2f}  gamma_dot {:9.3g}  eta {:9.3g}  left {:5.0f} s  {}",
                      s.strain, config_.run.strain, gdot / units_.rate_unit,
-                     relative_viscosity(config_.cell()->shear_stress, gdot, units_.eta_f), left);
+                     relative_viscosity(config_.cell()->shear_stress, gdot, units_.eta_f), left,
+                     state);
 }
 
 }  // namespace dilatant

@@ -7,6 +7,7 @@
 
 #include "dilatant/version.hpp"
 #include "measure/rheology.hpp"
+#include "measure/steadiness.hpp"
 
 namespace dilatant {
 
@@ -129,7 +130,14 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   // s_lim bounds the lubrication picture, so it limits validity only for a law
   // that reads s: the coulomb control has no lubrication to break down.
   const bool lubricated = config.friction.law == FrictionLawKind::Stribeck;
-  j["valid"] = !s.jammed && (!lubricated || over.mean <= 0.05) && profile_consistent;
+  // A window whose wall speed still drifts is not a steady point (measure/steadiness.hpp);
+  // one too short to tell (null) is not flagged.
+  const Drift drift = wall_speed_drift(s.rows, from);
+  const bool drifting = !s.jammed && drift.known && !drift.steady;
+  j["steady"] = s.jammed || !drift.known ? nlohmann::json(nullptr) : nlohmann::json(drift.steady);
+  j["wall_velocity_drift"] = drift.change;  // second half of the window minus first, relative
+  j["wall_velocity_drift_err"] = drift.error;
+  j["valid"] = !s.jammed && (!lubricated || over.mean <= 0.05) && profile_consistent && !drifting;
   j["bottom_wall_force_x"] = fx.mean;
   j["bottom_wall_force_x_err"] = fx.error;
   j["top_wall_force_z"] = fz_top.mean;  // push of the particles on the top wall

@@ -11,13 +11,17 @@ namespace {
 using namespace std::string_view_literals;
 
 // summary.json fields copied as they are (phi is renamed phi_realized).
-constexpr std::array kSummaryBefore = {"shear_stress"sv,  "gamma_dot"sv,         "gamma_dot_err"sv,
-                                       "eta"sv,           "eta_err"sv,           "valid"sv,
-                                       "jammed"sv,        "frac_bl"sv,           "frac_bl_err"sv,
-                                       "frac_hd"sv,       "frac_over_slim"sv,    "gamma_dot_bulk"sv,
-                                       "gamma_dot_gap"sv, "profile_consistent"sv};
+constexpr std::array kSummaryBefore = {"shear_stress"sv,   "gamma_dot"sv,
+                                       "gamma_dot_err"sv,  "eta"sv,
+                                       "eta_err"sv,        "valid"sv,
+                                       "jammed"sv,         "frac_bl"sv,
+                                       "frac_bl_err"sv,    "frac_hd"sv,
+                                       "frac_over_slim"sv, "gamma_dot_bulk"sv,
+                                       "gamma_dot_gap"sv,  "profile_consistent"sv,
+                                       "steady"sv};
 constexpr std::array kSummaryAfter = {"phi_bulk"sv,
                                       "phi_bulk_err"sv,
+                                      "phi_box"sv,
                                       "s_c"sv,
                                       "friction_law"sv,
                                       "normal_stress"sv,
