@@ -125,9 +125,13 @@ const StepReport& ShearCell::step() {
   // wall's kinetic-energy gain before the contacts act.
   const double drive_work =
       wall.drive_force * s.dt * (wall.velocity + 0.5 * s.dt * wall.drive_force / wall.mass);
-  // The drag is relative to the linear profile between the walls' centres
-  // (fluid/stokes_drag.hpp) at the wall speed of the step's start.
-  if (fluid_) fluid_->set_ambient({.shear_rate = wall.velocity / lz, .z0 = 0.0});
+  // The drag is relative to the linear profile between the walls' mean
+  // surfaces (fluid/stokes_drag.hpp) at the wall speed of the step's start: the
+  // profile a steady flow without slip has (docs/shear-cell.md), so that the
+  // fluid neither drives nor brakes it.
+  if (fluid_)
+    fluid_->set_ambient({.shear_rate = wall.velocity / s.geometry.gap_height,
+                         .z0 = s.geometry.wall_radius_mean});
   last_ = stepper_.step(s.world, &s.walls);
   cost_.detection_s += last_.detection_seconds;
   cost_.solve_s += last_.solve_seconds;

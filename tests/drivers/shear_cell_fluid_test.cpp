@@ -39,12 +39,11 @@ TEST(ShearCellFluid, EnergyBudgetClosesWithFilmsAndDrag) {
                         j["power_kinetic"].get<double>();
   // Exact step by step (solver/contact_work.hpp, fluid/implicit_drag.hpp).
   EXPECT_NEAR(injected, losses, 1e-9 * injected);
-  // The films dissipate; relative to a profile the particles lag in the upper
-  // half and lead in the lower, the drag takes power on balance in steady shear.
+  // The films dissipate in every step (tests/fluid/squeeze_film_test.cpp); the
+  // drag, relative to the flow's own mean profile, takes power from the
+  // particles' fluctuations on balance.
   EXPECT_GT(j["power_lubrication"].get<double>(), 0.0);
   EXPECT_GT(j["power_drag"].get<double>(), 0.0);
-  EXPECT_GT(j["power_lubrication"].get<double>(),
-            3.0 * j["power_lubrication_err"].get<double>());
 }
 
 // phi_definition = "box" fills Lx Ly Lz to cell.phi, and both counts are
