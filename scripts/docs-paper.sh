@@ -1,15 +1,18 @@
 #!/usr/bin/env bash
 # Runs the sweeps of the paper's figures (examples/paper/: Fig. 2, whose mu0 0.1
 # curve gives Fig. 1b-d, the coulomb control, the denser boundary cells, the DST
-# checks) at the paper's cell size, copies their tables and figures into docs/paper-reproduction/<sweep>/
-# and writes docs/paper-reproduction/tables.md and control.png (Stribeck against
-# the coulomb control) for docs/paper-reproduction.md.
+# checks) at the paper's cell size, and those of the Newtonian branch (the
+# literal model's dense window, fluid forces, eta_N(phi); a 15 x 10 x 18 cell),
+# copies their tables and figures into docs/paper-reproduction/<sweep>/
+# and writes docs/paper-reproduction/tables.md, control.png (Stribeck against
+# the coulomb control) and newtonian.png for docs/paper-reproduction.md.
 # Hours on the 2-core machine (docs/sweeps.md "The paper's figures"); resumable:
 # run it again after an interruption and finished points are skipped.
 #   scripts/docs-paper.sh [dilatant sweep options...]   e.g. --jobs 2
 # Environment: DILATANT_PAPER_OUT (default out/paper), DILATANT_PAPER_DOCS
 # (default docs/paper-reproduction), DILATANT_PAPER_SWEEPS (default
-# "fig2 coulomb boundary dst-checks"), DILATANT_SKIP_BUILD=1 to use build/ as it is.
+# "fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi"),
+# DILATANT_SKIP_BUILD=1 to use build/ as it is.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 out=${DILATANT_PAPER_OUT:-out/paper}
@@ -19,7 +22,8 @@ if [[ -z ${DILATANT_SKIP_BUILD:-} ]]; then
   bash scripts/build.sh release dilatant
 fi
 status=0
-for sweep in ${DILATANT_PAPER_SWEEPS:-fig2 coulomb boundary dst-checks}; do
+sweeps="fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi"
+for sweep in ${DILATANT_PAPER_SWEEPS:-$sweeps}; do
   # A failed point does not stop the others (exit 1): copy what there is, go on.
   ./build/dilatant sweep "examples/paper/$sweep.toml" --out "$out/$sweep" "$@" || status=$?
   mkdir -p "$docs/$sweep"
@@ -34,6 +38,9 @@ for sweep in ${DILATANT_PAPER_SWEEPS:-fig2 coulomb boundary dst-checks}; do
 done
 if [[ -f $docs/fig2/flowcurves.csv && -f $docs/coulomb/flowcurves.csv ]]; then
   /usr/bin/python3 scripts/paper_figures.py "$docs"
+fi
+if [[ -f $docs/newtonian-fluid/flowcurves.csv ]]; then
+  /usr/bin/python3 scripts/newtonian_figures.py "$docs"
 fi
 /usr/bin/python3 scripts/paper_tables.py "$docs" >"$docs/tables.md.part"
 mv "$docs/tables.md.part" "$docs/tables.md"

@@ -20,6 +20,9 @@ SWEEPS = [
     ("coulomb", "Control: `coulomb` law (no hydrodynamics), phi 0.58, mu0 0.1"),
     ("boundary", "Denser cells: where does DST appear?"),
     ("dst-checks", "phi 0.58, mu0 0.4 at lambda 100: run length, time step, wall mass"),
+    ("dense-window", "The literal model's dense window (15 x 10 x 18 cell, two seeds)"),
+    ("newtonian-fluid", "Fluid forces (films + drag), phi 0.58, mu0 0.1 and 0.4 (15 x 10 x 18 cell)"),
+    ("newtonian-phi", "Fluid forces: eta_N against phi at lambda 1 (15 x 10 x 18 cell)"),
 ]
 
 
@@ -60,6 +63,8 @@ def point_state(row):
         reasons.append("s > s_lim")
     if row.get("profile_consistent") == "false":
         reasons.append("profile")
+    if row.get("steady") == "false":
+        reasons.append("drifting")
     return "invalid (" + ", ".join(reasons or ["?"]) + ")"
 
 
@@ -70,16 +75,18 @@ def start_of(row):
 
 
 def points_table(rows):
-    head = ("| phi | mu0 | lambda | tau | gamma_dot | eta | P_BL | beyond s_lim "
+    head = ("| phi | phi_bulk | seed | mu0 | lambda | tau | gamma_dot | eta | P_BL | beyond s_lim "
             "| gamma_dot_bulk / gap | I | start | strain | run time | state |")
-    lines = [head, "|" + "---|" * 14]
+    lines = [head, "|" + "---|" * 16]
     # One curve after the other, each in increasing stress.
-    for r in sorted(rows, key=lambda r: (num(r.get("phi")), num(r.get("mu0")), num(r.get("lambda")))):
+    for r in sorted(rows, key=lambda r: (num(r.get("phi")), num(r.get("cell.seed", "1")),
+                                         num(r.get("mu0")), num(r.get("lambda")))):
         lam = num(r.get("lambda"))
         bulk, gap = num(r.get("gamma_dot_bulk")), num(r.get("gamma_dot_gap"))
         ratio = fmt(bulk / gap, 2) if gap > 0 else ""
         lines.append("| " + " | ".join([
-            r.get("phi", ""), r.get("mu0", ""), fmt(lam), fmt(lam * lam),
+            r.get("phi", ""), fmt(num(r.get("phi_bulk"))), r.get("cell.seed", "1"),
+            r.get("mu0", ""), fmt(lam), fmt(lam * lam),
             with_error(r, "gamma_dot"), with_error(r, "eta"), fmt(num(r.get("frac_bl")), 2),
             fmt(num(r.get("frac_over_slim")), 2), ratio, fmt(num(r.get("inertial_number")), 2),
             start_of(r), fmt(num(r.get("strain"))), fmt(num(r.get("wall_time_s")), 3) + " s",
