@@ -27,7 +27,9 @@ std::unique_ptr<SuspendingFluid> make_fluid(const FluidConfig& f, double eta_f) 
     film = SqueezeFilm{.eta_f = eta_f,
                        .cutoff = f.lubrication_cutoff,
                        .regularization = f.lubrication_regularization};
-  if (!drag && !film) return nullptr;
+  // No viscosity, no fluid (a dry granular scene): nothing to add, and no
+  // detection reach to widen.
+  if ((!drag && !film) || eta_f <= 0.0) return nullptr;
   return std::make_unique<SuspendingFluid>(drag, film);
 }
 

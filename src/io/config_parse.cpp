@@ -77,8 +77,8 @@ void check_constraints(const std::function<Section(std::string_view)>& section, 
   }
   if (const SceneConfig* scene = c.scene()) {
     const Section fl = section("fluid");
-    // A fluid force of a fluid without viscosity would silently be none.
-    if (c.fluid.eta_f <= 0.0) {
+    // A fluid force asked for in a fluid without viscosity would silently be none.
+    if (c.fluid.eta_f <= 0.0 && (fl.find("drag") || fl.find("lubrication"))) {
       check(fl, "drag", "stokes", c.fluid.drag == DragKind::None, "needs fluid.eta_f > 0");
       check(fl, "lubrication", "normal", c.fluid.lubrication == LubricationKind::None,
             "needs fluid.eta_f > 0");
