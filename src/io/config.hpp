@@ -78,10 +78,12 @@ struct FluidConfig {
   double lambda = 10.0;  // shear cell: eta_f = sqrt(tau rho_p) R / lambda
   double eta_f = 0.0;    // scene: the fluid viscosity itself
   // fluid/squeeze_film.hpp and fluid/stokes_drag.hpp; lengths in mean radii.
-  LubricationKind lubrication = LubricationKind::None;
+  // On by default: the model with a Newtonian branch at the paper's phi
+  // (docs/model.md "The default model"); both "none" is the literal model.
+  LubricationKind lubrication = LubricationKind::Normal;
   double lubrication_cutoff = 0.5;
   double lubrication_regularization = 1e-3;
-  DragKind drag = DragKind::None;
+  DragKind drag = DragKind::Stokes;
 };
 
 struct SolverConfig {
@@ -152,7 +154,8 @@ Config config_from_table(const toml::table& root, std::string source,
 void apply_config_overrides(toml::table& root, const std::vector<std::string>& overrides);
 
 // The built-in default run: the paper's shear cell at phi 0.58, mu0 0.1, Stribeck
-// law, every other key at its default; source "<built-in>". `overrides` work as
+// law and the default fluid forces, on the Newtonian branch; every other key at
+// its default; source "<built-in>". `overrides` work as
 // for load_config (a relative scene.particles resolves against the working directory).
 Config default_cell_config(const std::vector<std::string>& overrides = {});
 

@@ -33,7 +33,7 @@ std::vector<nlohmann::json> run_small_cells(const std::string& name,
   std::vector<std::string> overrides = {
       "cell.size=[8.0, 5.0, 9.0]", "fluid.lambda=1.0",         "run.strain=6.0",
       "run.transient_strain=2.0",  "run.output_interval=0.02", "run.snapshot_interval=0.0",
-      "solver.tolerance=1e-4"};
+      "solver.tolerance=1e-4",     "fluid.lubrication=none",   "fluid.drag=none"};
   overrides.insert(overrides.end(), extra.begin(), extra.end());
   const auto runs = testing::run_cell_seeds("conv_" + name, overrides);
   cache[name] = runs;

@@ -17,9 +17,9 @@ namespace dilatant {
 namespace {
 
 const std::vector<std::string> kCell = {
-    "cell.size=[8.0, 5.0, 9.0]",  "fluid.lambda=1.0",         "run.strain=3.0",
-    "run.transient_strain=1.0",   "run.output_interval=0.02", "run.snapshot_interval=0.0",
-    "solver.tolerance=1e-4",      "fluid.lubrication=normal", "fluid.drag=stokes"};
+    "cell.size=[8.0, 5.0, 9.0]", "fluid.lambda=1.0",         "run.strain=3.0",
+    "run.transient_strain=1.0",  "run.output_interval=0.02", "run.snapshot_interval=0.0",
+    "solver.tolerance=1e-4",     "fluid.lubrication=normal", "fluid.drag=stokes"};
 
 TEST(ShearCellFluid, EnergyBudgetClosesWithFilmsAndDrag) {
   const auto dir =
@@ -49,9 +49,9 @@ TEST(ShearCellFluid, EnergyBudgetClosesWithFilmsAndDrag) {
 // phi_definition = "box" fills Lx Ly Lz to cell.phi, and both counts are
 // reported: the box's is below the requested phi by less than one sphere.
 TEST(ShearCellFluid, BoxVolumeFractionCountsTheWholeHeight) {
-  const Config box = default_cell_config({"cell.size=[8.0, 5.0, 9.0]", "cell.phi=0.45",
-                                          "cell.phi_definition=box", "run.strain=0.01",
-                                          "run.transient_strain=0.0"});
+  const Config box =
+      default_cell_config({"cell.size=[8.0, 5.0, 9.0]", "cell.phi=0.45", "cell.phi_definition=box",
+                           "run.strain=0.01", "run.transient_strain=0.0"});
   const ShearCell cell(box);
   const ShearCellGeometry& g = cell.state().geometry;
   const double one_sphere = 4.0 / 3.0 * M_PI / (8.0 * 5.0 * 9.0);  // radius <= 1

@@ -1,7 +1,8 @@
 // Physics of the shear cell in steady flow, on a small cell (8 x 5 x 9 R, ~30
 // mobile spheres) in the viscous regime (lambda = 1), where the flow reaches its
 // steady state within 2 strain units. Tolerances are the runs' own block-averaged
-// error bars (flow_series.hpp), at 3 sigma.
+// error bars (flow_series.hpp), at 3 sigma. The paper's literal model (no fluid
+// forces; with them: shear_cell_fluid_test.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,7 +21,7 @@ namespace {
 const std::vector<std::string> kCell = {
     "cell.size=[8.0, 5.0, 9.0]", "fluid.lambda=1.0",         "run.strain=6.0",
     "run.transient_strain=2.0",  "run.output_interval=0.02", "run.snapshot_interval=0.0",
-    "solver.tolerance=1e-4"};
+    "solver.tolerance=1e-4",     "fluid.lubrication=none",   "fluid.drag=none"};
 
 class SteadyShear : public ::testing::Test {
  protected:
