@@ -78,12 +78,12 @@ struct FluidConfig {
   double lambda = 10.0;  // shear cell: eta_f = sqrt(tau rho_p) R / lambda
   double eta_f = 0.0;    // scene: the fluid viscosity itself
   // fluid/squeeze_film.hpp and fluid/stokes_drag.hpp; lengths in mean radii.
-  // On by default: the model with a Newtonian branch at the paper's phi
-  // (docs/model.md "The default model"); both "none" is the literal model.
-  LubricationKind lubrication = LubricationKind::Normal;
+  // Off by default: the paper's literal model (docs/model.md "The default
+  // model" says why, with the measurements).
+  LubricationKind lubrication = LubricationKind::None;
   double lubrication_cutoff = 0.5;
   double lubrication_regularization = 1e-3;
-  DragKind drag = DragKind::Stokes;
+  DragKind drag = DragKind::None;
 };
 
 struct SolverConfig {
@@ -154,8 +154,7 @@ Config config_from_table(const toml::table& root, std::string source,
 void apply_config_overrides(toml::table& root, const std::vector<std::string>& overrides);
 
 // The built-in default run: the paper's shear cell at phi 0.58, mu0 0.1, Stribeck
-// law and the default fluid forces, on the Newtonian branch; every other key at
-// its default; source "<built-in>". `overrides` work as
+// law (the literal model), every other key at its default; source "<built-in>". `overrides` work as
 // for load_config (a relative scene.particles resolves against the working directory).
 Config default_cell_config(const std::vector<std::string>& overrides = {});
 

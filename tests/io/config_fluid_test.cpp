@@ -18,16 +18,14 @@ Config parse(const std::string& text, const std::vector<std::string>& overrides 
 
 const std::string kScene = "[scene]\nparticles = 'p.csv'\n[run]\ntime = 1.0\n";
 
-TEST(ConfigFluid, DefaultsAreFilmsAndDragAndTheLiteralModelIsTheirAbsence) {
+TEST(ConfigFluid, DefaultsAreTheLiteralModel) {
   const Config c = parse("[cell]\n");
-  EXPECT_EQ(c.fluid.lubrication, LubricationKind::Normal);
-  EXPECT_EQ(c.fluid.drag, DragKind::Stokes);
+  EXPECT_EQ(c.fluid.lubrication, LubricationKind::None);
+  EXPECT_EQ(c.fluid.drag, DragKind::None);
   EXPECT_FALSE(c.friction.viscous_beyond_s_lim);
   EXPECT_EQ(c.cell()->phi_definition, PhiDefinition::BetweenWalls);
-  EXPECT_EQ(c.resolved.at_path("fluid.lubrication").value<std::string>(), "normal");
-  const Config literal = parse("[cell]\n[fluid]\nlubrication = 'none'\ndrag = 'none'\n");
-  EXPECT_EQ(literal.fluid.lubrication, LubricationKind::None);
-  EXPECT_EQ(literal.fluid.drag, DragKind::None);
+  EXPECT_EQ(c.resolved.at_path("fluid.lubrication").value<std::string>(), "none");
+  EXPECT_EQ(c.resolved.at_path("fluid.drag").value<std::string>(), "none");
   // A dry scene (no eta_f) has no fluid forces, and needs no key to say so.
   EXPECT_NO_THROW(parse(kScene));
   EXPECT_EQ(c.resolved.at_path("friction.beyond_s_lim").value<std::string>(), "cap");

@@ -119,12 +119,12 @@ TEST(Config, BuiltInDefaultIsThePapersCell) {
   EXPECT_EQ(c.friction.mu0, 0.1);
   EXPECT_EQ(c.friction.s_c, 5e-5);
   EXPECT_EQ(c.friction.law, FrictionLawKind::Stribeck);
-  // The default model's Newtonian branch, and a run short enough for a first try.
-  EXPECT_EQ(c.fluid.lambda, 1.8);
-  EXPECT_EQ(c.fluid.lubrication, LubricationKind::Normal);
-  EXPECT_EQ(c.fluid.drag, DragKind::Stokes);
-  EXPECT_EQ(c.run.strain, 4.0);
-  EXPECT_EQ(c.run.transient_strain, 2.0);
+  // The literal model, thickened, and a run long enough to be steady.
+  EXPECT_EQ(c.fluid.lambda, 50.0);
+  EXPECT_EQ(c.fluid.lubrication, LubricationKind::None);
+  EXPECT_EQ(c.fluid.drag, DragKind::None);
+  EXPECT_EQ(c.run.strain, 8.0);
+  EXPECT_EQ(c.run.transient_strain, 4.0);
   const auto changed = default_cell_config({"friction.mu0=0.35", "cell.phi=0.59"});
   EXPECT_EQ(changed.friction.mu0, 0.35);
   EXPECT_EQ(changed.cell()->phi, 0.59);
