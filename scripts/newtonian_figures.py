@@ -19,6 +19,7 @@ import json
 import math
 import os
 import sys
+from pathlib import Path
 
 from plot_common import plt, read_rows, save
 
@@ -43,11 +44,13 @@ def flow_curves(ax, rows, label_of, marker):
         x = [number(r, "gamma_dot") for r in points]
         y = [number(r, "eta") for r in points]
         e = [number(r, "eta_err") for r in points]
-        line = ax.errorbar(x, y, yerr=e, marker=marker, capsize=2, label=label)
-        # Invalid points (beyond s_lim, profile, drift) drawn open.
-        bad = [(a, b) for a, b, r in zip(x, y, points) if r.get("valid") != "true"]
-        if bad:
-            ax.plot(*zip(*bad), marker, mfc="white", color=line[0].get_color(), ls="none")
+        valid = [r.get("valid") == "true" for r in points]
+        (line,) = ax.plot(x, y, "-", label=label)
+        colour = line.get_color()
+        for xs, ys, es, v in zip(x, y, e, valid):
+            # Invalid points (beyond s_lim, profile, drift) drawn open.
+            ax.errorbar([xs], [ys], yerr=[es], marker=marker, capsize=2, color=colour,
+                        mfc=colour if v else "white", ls="none")
 
 
 def fit_divergence(phi, eta, err):
@@ -83,13 +86,13 @@ def fit_divergence(phi, eta, err):
 
 
 def main():
-    docs = sys.argv[1]
+    docs = Path(sys.argv[1])
     fig, ax = plt.subplots(figsize=(6, 4.5))
     fluid = os.path.join(docs, "newtonian-fluid", "flowcurves.csv")
     dense = os.path.join(docs, "dense-window", "flowcurves.csv")
     if os.path.exists(fluid):
         flow_curves(ax, read_rows(fluid),
-                    lambda r: f"films + drag, phi_bulk {number(r, 'phi_bulk'):.3f}, mu0 {r['mu0']}", "o")
+                    lambda r: f"films + drag, nominal phi {r['phi']}, mu0 {r['mu0']}", "o")
     if os.path.exists(dense):
         flow_curves(ax, [r for r in read_rows(dense) if r.get("cell.seed", "1") == "1"],
                     lambda r: f"literal, nominal phi {r['phi']}, mu0 {r['mu0']}", "s")
@@ -122,7 +125,7 @@ def main():
     ax.set_xlabel(r"$\phi_{bulk}$")
     ax.set_ylabel(r"$\eta_N$ [$\eta_f$]")
     ax.legend(fontsize=7)
-    save(fig, os.path.join(docs, "newtonian-phi"), "eta_n")
+    save(fig, docs / "newtonian-phi", "eta_n")
     print(json.dumps(result))
 
 

@@ -22,6 +22,8 @@ SWEEPS = [
     ("dst-checks", "phi 0.58, mu0 0.4 at lambda 100: run length, time step, wall mass"),
     ("dense-window", "The literal model's dense window (15 x 10 x 18 cell, two seeds)"),
     ("newtonian-fluid", "Fluid forces (films + drag), phi 0.58, mu0 0.1 and 0.4 (15 x 10 x 18 cell)"),
+    ("newtonian-films", "Squeeze films alone, phi 0.58 (15 x 10 x 18 cell; two points)"),
+    ("fluid-checks", "Film regularisation and beyond_s_lim (15 x 10 x 18 cell)"),
     ("newtonian-phi", "Fluid forces: eta_N against phi at lambda 1 (15 x 10 x 18 cell)"),
 ]
 

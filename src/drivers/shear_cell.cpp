@@ -130,8 +130,8 @@ const StepReport& ShearCell::step() {
   // profile a steady flow without slip has (docs/shear-cell.md), so that the
   // fluid neither drives nor brakes it.
   if (fluid_)
-    fluid_->set_ambient({.shear_rate = wall.velocity / s.geometry.gap_height,
-                         .z0 = s.geometry.wall_radius_mean});
+    fluid_->set_ambient(
+        {.shear_rate = wall.velocity / s.geometry.gap_height, .z0 = s.geometry.wall_radius_mean});
   last_ = stepper_.step(s.world, &s.walls);
   cost_.detection_s += last_.detection_seconds;
   cost_.solve_s += last_.solve_seconds;

@@ -17,7 +17,8 @@ void StokesDrag::assign(const World& world, const AmbientShear& flow, BodyDrag& 
     const double r = b.radius[i];
     drag.translational[i] = 6.0 * pi * eta_f * r;
     drag.rotational[i] = 8.0 * pi * eta_f * r * r * r;
-    if (sheared) drag.fluid_velocity[i] = Vec3(flow.shear_rate * (b.position[i].z() - flow.z0), 0.0, 0.0);
+    if (sheared)
+      drag.fluid_velocity[i] = Vec3(flow.shear_rate * (b.position[i].z() - flow.z0), 0.0, 0.0);
   }
 }
 

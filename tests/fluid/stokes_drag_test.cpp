@@ -34,7 +34,7 @@ TEST(StokesDrag, SettlingSphereFollowsTheExponentialApproach) {
   World world;
   world.gravity = Vec3(0.0, 0.0, -9.81);
   world.bodies.add_sphere(0, Vec3::Zero(), 1e-3, 2500.0, false);  // a 1 mm glass bead
-  const double eta = 1e-3, r = 1e-3, m = world.bodies.mass(0);     // in water
+  const double eta = 1e-3, r = 1e-3, m = world.bodies.mass(0);    // in water
   const double zeta = 6.0 * kPi * eta * r, tau = m / zeta, v_t = -9.81 * m / zeta;
   const SuspendingFluid fluid = stokes(eta);
   const double dt = tau / 200.0;

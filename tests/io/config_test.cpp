@@ -120,11 +120,11 @@ TEST(Config, BuiltInDefaultIsThePapersCell) {
   EXPECT_EQ(c.friction.s_c, 5e-5);
   EXPECT_EQ(c.friction.law, FrictionLawKind::Stribeck);
   // The literal model, thickened, and a run long enough to be steady.
-  EXPECT_EQ(c.fluid.lambda, 50.0);
+  EXPECT_EQ(c.fluid.lambda, 100.0);
   EXPECT_EQ(c.fluid.lubrication, LubricationKind::None);
   EXPECT_EQ(c.fluid.drag, DragKind::None);
-  EXPECT_EQ(c.run.strain, 8.0);
-  EXPECT_EQ(c.run.transient_strain, 4.0);
+  EXPECT_EQ(c.run.strain, 12.0);
+  EXPECT_EQ(c.run.transient_strain, 6.0);
   const auto changed = default_cell_config({"friction.mu0=0.35", "cell.phi=0.59"});
   EXPECT_EQ(changed.friction.mu0, 0.35);
   EXPECT_EQ(changed.cell()->phi, 0.59);
