@@ -107,20 +107,28 @@ def main():
     phi_table = os.path.join(docs, "newtonian-phi", "flowcurves.csv")
     if not os.path.exists(phi_table):
         return
-    rows = [r for r in done(read_rows(phi_table)) if r.get("valid") == "true"]
+    every = done(read_rows(phi_table))
+    rows = [r for r in every if r.get("valid") == "true"]
     phi = [number(r, "phi_bulk") for r in rows]
     eta = [number(r, "eta") for r in rows]
     err = [number(r, "eta_err") for r in rows]
-    result = fit_divergence(phi, eta, err)
+    fig, ax = plt.subplots(figsize=(5, 4))
+    ax.errorbar(phi, eta, yerr=err, marker="o", ls="none", capsize=2, label="valid")
+    bad = [r for r in every if r.get("valid") != "true"]
+    ax.errorbar([number(r, "phi_bulk") for r in bad], [number(r, "eta") for r in bad],
+                yerr=[number(r, "eta_err") for r in bad], marker="o", mfc="white", ls="none",
+                capsize=2, color="grey", label="not valid (not fitted)")
+    # Three parameters: a fit needs at least four valid points.
+    result = fit_divergence(phi, eta, err) if len(rows) >= 4 else {"points": len(rows),
+                                                                  "fitted": False}
     part = os.path.join(docs, "newtonian-phi", "eta_n_fit.json.part")
     with open(part, "w") as f:
         json.dump(result, f, indent=2)
     os.replace(part, part[: -len(".part")])
-    fig, ax = plt.subplots(figsize=(5, 4))
-    ax.errorbar(phi, eta, yerr=err, marker="o", ls="none", capsize=2, label="simulation")
-    x = np.linspace(min(phi) - 0.01, result["phi_m"] - 0.002, 200)
-    ax.plot(x, result["A"] * (result["phi_m"] - x) ** -result["beta"],
-            label=rf"$A(\phi_m-\phi)^{{-{result['beta']:.2f}}}$, $\phi_m$ = {result['phi_m']:.3f}")
+    if "phi_m" in result:
+        x = np.linspace(min(phi) - 0.01, result["phi_m"] - 0.002, 200)
+        ax.plot(x, result["A"] * (result["phi_m"] - x) ** -result["beta"],
+                label=rf"$A(\phi_m-\phi)^{{-{result['beta']:.2f}}}$, $\phi_m$ = {result['phi_m']:.3f}")
     ax.set_yscale("log")
     ax.set_xlabel(r"$\phi_{bulk}$")
     ax.set_ylabel(r"$\eta_N$ [$\eta_f$]")
