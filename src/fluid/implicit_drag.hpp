@@ -27,9 +27,12 @@ class ImplicitDrag {
 
   // Whether predict() ran in this step (until restore_masses()).
   bool active() const { return active_; }
-  // The velocities predict() found, before the drag acted.
-  const std::vector<Vec3>& predicted_velocity() const { return velocity_; }
-  const std::vector<Vec3>& predicted_angular_velocity() const { return angular_velocity_; }
+  // Swaps the velocities predict() found, before the drag acted, with those in
+  // `bodies` (call twice to undo): a look at them without copying the bodies.
+  void swap_predicted_velocities(Bodies& bodies) {
+    bodies.velocity.swap(velocity_);
+    bodies.angular_velocity.swap(angular_velocity_);
+  }
   // The drag's work over the step, given the end-of-step velocities in `bodies`:
   //     sum_i J_i . (v_i,pred + v_i,end) / 2,   J_i = -dt zeta_i (v_i,end - U_i)
   // (and alike for rotation). Since m (v_end - v_pred) = J_drag + J_contacts

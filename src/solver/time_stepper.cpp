@@ -107,14 +107,9 @@ StepReport TimeStepper::step(World& world, Boundary* boundary) {
   slabs_ = partition_into_slabs(contacts_, world, boundary_bodies, scratch_);
   // The contacts' work is taken from the velocities before the drag acted
   // (fluid/implicit_drag.hpp), so that it and the drag's work add up exactly.
-  if (implicit_drag_.active()) {
-    predicted_bodies_ = b;
-    predicted_bodies_.velocity = implicit_drag_.predicted_velocity();
-    predicted_bodies_.angular_velocity = implicit_drag_.predicted_angular_velocity();
-    relative_velocities(predicted_bodies_, free_velocity_);
-  } else {
-    relative_velocities(b, free_velocity_);
-  }
+  if (implicit_drag_.active()) implicit_drag_.swap_predicted_velocities(b);
+  relative_velocities(b, free_velocity_);
+  if (implicit_drag_.active()) implicit_drag_.swap_predicted_velocities(b);
   warm_start(b);
   const auto solve_start = Clock::now();
   if (boundary != nullptr) boundary->begin_solve(contacts_);

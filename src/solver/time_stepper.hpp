@@ -84,7 +84,6 @@ class TimeStepper {
   const FluidForces* fluid_ = nullptr;
   BodyDrag drag_;  // of the current step, reused
   ImplicitDrag implicit_drag_;
-  Bodies predicted_bodies_;  // before the drag, for contact_work (reused)
   SlabPartition slabs_;
   std::vector<Contact> scratch_;  // reused by partition_into_slabs
   SolverSettings settings_;
