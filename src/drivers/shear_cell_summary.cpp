@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "dilatant/version.hpp"
+#include "measure/bulk_fraction.hpp"
 #include "measure/rheology.hpp"
 #include "measure/steadiness.hpp"
 
@@ -89,8 +90,15 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   j["phi_definition"] = box ? "box" : "between-walls";
   j["phi_between_walls"] = s.geometry.phi;
   j["phi_box"] = s.geometry.phi_box;
-  j["phi_bulk"] = phi_bulk.mean;  // central half of the gap, steady-state average
-  j["phi_bulk_err"] = phi_bulk.error;
+  if (phi_bulk.samples > 0) {
+    j["phi_bulk"] = phi_bulk.mean;  // central half of the gap, steady-state average
+    j["phi_bulk_err"] = phi_bulk.error;
+  } else {
+    // No row after the transient (a jam stops the wall before it): the packing
+    // the run ends in still has a bulk fraction, from its final state.
+    j["phi_bulk"] = slab_volume_fraction(s.world, s.walls.body_groups(), 0.25 * lz, 0.75 * lz);
+    j["phi_bulk_err"] = nullptr;
+  }
   j["mobile_spheres"] = s.geometry.mobile_count;
   j["wall_radius_mean"] = s.geometry.wall_radius_mean;
   j["shear_stress"] = cell.shear_stress / u.stress_unit;

@@ -1,0 +1,33 @@
+// A jammed cell still reports its packing: dry grains with friction 1 in a small
+// cell well above their shear-jamming fraction (about 0.58 at mu 1, Chialvo, Sun
+// & Sundaresan 2012) stop the wall before the transient ends, so no steady row
+// exists; the bulk fraction then comes from the final state. A jammed frictional
+// packing of hard spheres lies between random loose packing (about 0.55) and
+// random close packing (about 0.64; our 0.8-1.0 R polydispersity packs a little
+// denser, hence 0.66).
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "drivers/cell_run_helpers.hpp"
+
+namespace dilatant {
+namespace {
+
+TEST(CellJam, AJammedRunReportsTheBulkFractionOfItsPacking) {
+  const auto j = testing::run_cell_summary(
+      "jam",
+      {"cell.size=[8.0, 5.0, 9.0]", "cell.phi=0.62", "friction.law=coulomb", "friction.mu0=1.0",
+       "run.strain=2.0", "run.transient_strain=1.0", "run.snapshot_interval=0.0",
+       "solver.tolerance=1e-4", "fluid.lubrication=none", "fluid.drag=none"});
+  ASSERT_TRUE(j["jammed"].get<bool>());
+  EXPECT_FALSE(j["valid"].get<bool>());
+  EXPECT_TRUE(j["eta"].is_null());
+  const double phi_bulk = j["phi_bulk"].get<double>();
+  EXPECT_GT(phi_bulk, 0.55);
+  EXPECT_LT(phi_bulk, 0.66);
+  EXPECT_TRUE(j["phi_bulk_err"].is_null());  // one state, no average
+}
+
+}  // namespace
+}  // namespace dilatant
