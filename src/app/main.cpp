@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "app/analyze_command.hpp"
+#include "app/jam_command.hpp"
 #include "app/plot_command.hpp"
 #include "app/run_command.hpp"
 #include "app/sweep_command.hpp"
@@ -26,6 +27,8 @@ int main(int argc, char** argv) {
   CLI::App* analyze = dilatant::add_analyze_command(app, analyze_args);
   dilatant::PlotCommandArgs plot_args;
   CLI::App* plot = dilatant::add_plot_command(app, plot_args);
+  dilatant::JamCommandArgs jam_args;
+  CLI::App* jam = dilatant::add_jam_command(app, jam_args);
 
   try {
     app.parse(argc, argv);
@@ -39,6 +42,7 @@ int main(int argc, char** argv) {
     if (sweep->parsed()) return dilatant::execute_sweep_command(sweep_args);
     if (analyze->parsed()) return dilatant::execute_analyze_command(analyze_args);
     if (plot->parsed()) return dilatant::execute_plot_command(plot_args);
+    if (jam->parsed()) return dilatant::execute_jam_command(jam_args);
   } catch (const dilatant::InputError& e) {
     std::cerr << "dilatant: error: " << e.what() << "\n";
     return 2;

@@ -84,6 +84,8 @@ int run_cell(const Config& config, const RunOptions& options, bool resume,
 int execute_run_command(const RunCommandArgs& args) {
   const Config config = args.config.empty() ? default_cell_config(args.overrides)
                                             : load_config(args.config, args.overrides);
+  if (config.sediment() != nullptr)
+    throw InputError(config.source + ": a [sediment] config is run by dilatant jam");
   RunOptions options;
   options.quiet = args.quiet;
   if (!args.start_from.empty() && !config.cell())

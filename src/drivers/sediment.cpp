@@ -66,9 +66,8 @@ Sediment::Sediment(const SedimentSettings& settings)
       // A step moves a sphere at most 2% of the smallest radius at the
       // terminal speed; the drag is implicit, so it sets no other limit.
       stepper_(CoulombLaw{.mu0 = settings.mu0, .eta_f = 0.0},
-               make_solver_settings(
-                   {.tolerance = settings.solver_tolerance, .threads = settings.threads}),
-               0.02 * settings.radius_min / terminal_speed_) {
+               settings.solver,
+               settings.dt > 0.0 ? settings.dt : 0.02 * settings.radius_min / terminal_speed_) {
   stepper_.set_fluid_forces(fluid_.get());
   max_time_ = settings.max_time_factor * settings.height / terminal_speed_;
   window_start_height_ = mean_height();

@@ -35,8 +35,8 @@ struct SedimentSettings {
   std::int64_t seed = 1;
   double mu0 = 0.0;             // Coulomb friction, sphere-sphere and sphere-floor
   double stokes_number = 1e-3;  // g tau^2 / R
-  double solver_tolerance = 1e-4;
-  int threads = 1;
+  SolverSettings solver{.tolerance = 1e-4};
+  double dt = 0.0;                // 0: automatic (2% of radius_min at the terminal speed)
   double max_time_factor = 20.0;  // give up after this many height / v_t
 };
 

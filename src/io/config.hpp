@@ -9,8 +9,9 @@
 // times in R*sqrt(rho_p/tau), masses in rho_p*R^3 (measure/cell_units.hpp). In
 // scene mode the numbers are in whatever consistent units the scene uses (e.g. SI).
 //
-// Exactly one of [cell] (the paper's shear cell) and [scene] (particles from a
-// CSV file, for validation and teaching) must be present: it is the run mode.
+// Exactly one of [cell] (the paper's shear cell), [scene] (particles from a
+// CSV file, for validation and teaching) and [sediment] (`dilatant jam`) must
+// be present: it is the run mode.
 // Keys that belong to the other mode are errors. Numbers must be finite;
 // integers are accepted where a float is expected; unknown keys and
 // out-of-range values are errors (InputError).
@@ -64,6 +65,18 @@ struct CellConfig {
   double initial_shear_rate = 0.2;
 };
 
+// Simulated centrifugation (`dilatant jam`, drivers/sediment.hpp): lengths in
+// the largest radius R = 1, gravity g = 1, rho_p = 1.
+struct SedimentConfig {
+  Vec3 size{12.0, 12.0, 40.0};  // Lx, Ly (periodic), floor to lid
+  double phi = 0.47;            // of the suspension before it settles (the paper's)
+  double radius_min = 0.8;      // radii uniform in [radius_min, 1]
+  std::int64_t seed = 1;        // samples use seed, seed + 1, ...
+  int samples = 3;
+  double stokes_number = 1e-3;  // g tau^2 / R, tau = 2 rho_p R^2 / (9 eta_f)
+  double exclusion = 4.0;       // R left out at the floor and at the surface
+};
+
 // Defaults: the engine's own (friction/defaults.hpp, solver/contact_solver.hpp),
 // so that a law or solver built without a config behaves as a default run.
 struct FrictionConfig {
@@ -109,7 +122,7 @@ struct RunConfig {
 
 struct Config {
   // The run mode: the paper's shear cell or a scene.
-  std::variant<CellConfig, SceneConfig> mode;
+  std::variant<CellConfig, SceneConfig, SedimentConfig> mode;
   double density = 1.0;  // [particles] density
   FrictionConfig friction;
   FluidConfig fluid;
@@ -123,6 +136,7 @@ struct Config {
   CellConfig* cell() { return std::get_if<CellConfig>(&mode); }
   const SceneConfig* scene() const { return std::get_if<SceneConfig>(&mode); }
   SceneConfig* scene() { return std::get_if<SceneConfig>(&mode); }
+  const SedimentConfig* sediment() const { return std::get_if<SedimentConfig>(&mode); }
   // The fluid viscosity the friction law uses, in code units: fluid.eta_f in a
   // scene; sqrt(tau rho_p) R / lambda in the shear cell (measure/cell_units.hpp).
   double fluid_viscosity() const;

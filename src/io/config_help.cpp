@@ -9,9 +9,13 @@ std::string config_keys_help() {
   Config cell_run;  // the defaults: a default-constructed Config is a [cell] run
   Config scene_run;
   scene_run.mode = SceneConfig{};
+  Config sediment_run;
+  sediment_run.mode = SedimentConfig{};
+  sediment_run.friction.law = FrictionLawKind::Coulomb;
   std::string out =
-      "Configuration keys (TOML). Exactly one of [cell] (the paper's shear cell) and [scene] "
-      "(particles from a CSV file) sets the run mode; a key of the other mode is an error. "
+      "Configuration keys (TOML). Exactly one of [cell] (the paper's shear cell), [scene] "
+      "(particles from a CSV file) and [sediment] (dilatant jam) sets the run mode; a key of the "
+      "other mode is an error. "
       "Every key has the default shown; lengths in R, times in R sqrt(rho_p/tau) in a cell.\n";
   std::string_view section;
   for (const ConfigKey& k : config_keys()) {
@@ -19,7 +23,9 @@ std::string config_keys_help() {
       section = k.section;
       out += fmt::format("\n[{}]\n", section);
     }
-    const Config& defaults = k.mode == RunMode::Scene ? scene_run : cell_run;
+    const Config& defaults = k.mode == RunMode::Scene      ? scene_run
+                             : k.mode == RunMode::Sediment ? sediment_run
+                                                           : cell_run;
     toml::table t;
     k.write(defaults, t);
     std::string value = toml_value_text(*t.get(k.name));

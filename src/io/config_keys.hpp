@@ -20,7 +20,15 @@
 
 namespace dilatant {
 
-enum class RunMode : std::uint8_t { Any, Cell, Scene };
+// The run modes a key belongs to, as a set: a key of a mode the run is not in
+// is an error, never silently ignored.
+enum class RunMode : std::uint8_t {
+  Cell = 1,
+  Scene = 2,
+  Sediment = 4,
+  CellOrScene = Cell | Scene,
+  Any = Cell | Scene | Sediment
+};
 
 struct ConfigKey {
   std::string_view section;  // "cell"
@@ -39,7 +47,9 @@ struct ConfigKey {
   std::function<void(const Config&, toml::table&)> write;
 
   std::string dotted() const { return std::string(section) + "." + std::string(name); }
-  bool applies_to(RunMode m) const { return mode == RunMode::Any || mode == m; }
+  bool applies_to(RunMode m) const {
+    return (static_cast<unsigned>(mode) & static_cast<unsigned>(m)) != 0;
+  }
 };
 
 // The sections in documentation order, and every key in that order.
@@ -51,8 +61,10 @@ bool is_config_section(std::string_view section);
 std::vector<std::string_view> config_key_names(std::string_view section);
 
 // The mode a config is in, and how a user names it.
-inline RunMode run_mode(const Config& c) { return c.cell() ? RunMode::Cell : RunMode::Scene; }
-std::string_view mode_name(RunMode mode);  // "[cell]", "[scene]"
+inline RunMode run_mode(const Config& c) {
+  return c.cell() ? RunMode::Cell : c.scene() ? RunMode::Scene : RunMode::Sediment;
+}
+std::string_view mode_name(RunMode mode);  // "[cell]", "[scene]", "[sediment]", ...
 
 // The key list of `dilatant run --help`: every key with its default, range,
 // unit, the mode it belongs to, and its meaning.

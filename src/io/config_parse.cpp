@@ -8,6 +8,8 @@
 #include <limits>
 #include <numbers>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "io/config.hpp"
 #include "io/config_detail.hpp"
@@ -33,12 +35,20 @@ RunMode check_sections(const toml::table& root, const std::string& source) {
                                    config_detail::type_name(node), config_detail::show(node)));
   }
   const bool has_cell = root.contains("cell"), has_scene = root.contains("scene");
-  if (has_cell == has_scene)
+  std::vector<std::string> present;
+  for (const auto* m : {"cell", "scene", "sediment"})
+    if (root.contains(m)) present.push_back(fmt::format("[{}]", m));
+  if (present.size() != 1) {
+    const std::string what =
+        present.empty()       ? std::string("neither [cell], [scene] nor [sediment] is present")
+        : present.size() == 2 ? fmt::format("both {} and {} are present", present[0], present[1])
+                              : std::string("[cell], [scene] and [sediment] are all present");
     throw InputError(fmt::format(
-        "{}: {} present; use exactly one "
-        "([cell] = shear cell, [scene] = particles from a CSV file)",
-        source, has_cell ? "both [cell] and [scene] are" : "neither [cell] nor [scene] is"));
-  return has_cell ? RunMode::Cell : RunMode::Scene;
+        "{}: {}; use exactly one ([cell] = shear cell, [scene] = particles from a CSV file, "
+        "[sediment] = simulated centrifugation)",
+        source, what));
+  }
+  return has_cell ? RunMode::Cell : has_scene ? RunMode::Scene : RunMode::Sediment;
 }
 
 // A key of the file must be a key of its section and of the run's mode: a key
@@ -95,6 +105,9 @@ void check_constraints(const std::function<Section(std::string_view)>& section, 
   }
   const Section f = section("friction");
   const FrictionConfig& fr = c.friction;
+  if (c.sediment() != nullptr)
+    check(f, "law", "stribeck", fr.law == FrictionLawKind::Coulomb,
+          "a sediment's contacts are boundary lubricated: use \"coulomb\" with friction.mu0");
   if (f.find("s_lim") || !f.find("s_c"))
     check(f, "s_lim", fr.s_lim, fr.s_lim > fr.s_c,
           fmt::format("must be > friction.s_c = {}", fr.s_c));
@@ -110,9 +123,14 @@ Config build(const toml::table& root, std::string source, const std::filesystem:
   };
   Config c;
   if (mode == RunMode::Scene) c.mode = SceneConfig{};
+  // A sediment's contacts are boundary lubricated (the paper centrifuges at
+  // about 2000 g): Coulomb friction is its law, and the only one it accepts.
+  if (mode == RunMode::Sediment)
+    c.mode = SedimentConfig{}, c.friction.law = FrictionLawKind::Coulomb;
   for (std::string_view name : config_sections()) {
     if (name == "cell" && mode != RunMode::Cell) continue;
     if (name == "scene" && mode != RunMode::Scene) continue;
+    if (name == "sediment" && mode != RunMode::Sediment) continue;
     const Section s = section(name);
     check_keys(s, name, mode);
     for (const ConfigKey& k : config_keys())

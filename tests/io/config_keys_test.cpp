@@ -31,14 +31,15 @@ TEST(ConfigKeys, EveryKeyIsDescribedOnceInAKnownSection) {
     EXPECT_FALSE(k.type.empty()) << k.dotted();
     EXPECT_EQ(find_config_key(k.section, k.name), &k);
   }
-  EXPECT_EQ(seen.size(),
-            43u);  // 10 cell, 6 scene, 1 + 5 + 6 + 9 + 6: a new key is a deliberate change
+  EXPECT_EQ(
+      seen.size(),
+      50u);  // 10 cell, 6 scene, 7 sediment, 1 + 5 + 6 + 9 + 6: a new key is a deliberate change
 }
 
 // The defaults (the structs' initialisers) lie in their own ranges: the
 // smallest configs of both modes load, and resolve to exactly the keys of their mode.
 TEST(ConfigKeys, DefaultsAreValidAndTheResolvedConfigHasTheKeysOfItsMode) {
-  for (const char* text : {kMinimalCell, kMinimalScene}) {
+  for (const char* text : {kMinimalCell, kMinimalScene, "[sediment]\n"}) {
     const Config c = parse(text);
     const RunMode mode = run_mode(c);
     for (const ConfigKey& k : config_keys()) {

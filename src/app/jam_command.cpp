@@ -1,0 +1,67 @@
+#include "app/jam_command.hpp"
+
+#include <fmt/format.h>
+
+#include <iostream>
+
+#include "drivers/sediment_run.hpp"
+#include "io/config.hpp"
+#include "io/input_error.hpp"
+
+namespace dilatant {
+
+CLI::App* add_jam_command(CLI::App& app, JamCommandArgs& args) {
+  CLI::App* jam = app.add_subcommand(
+      "jam",
+      "Simulated centrifugation: a suspension at phi 0.47 settles under gravity with Coulomb "
+      "friction mu0 until it stops; the sediment's bulk fraction is the jamming fraction "
+      "phi_max of that friction (docs/jamming.md). CONFIG is a TOML file with a [sediment] "
+      "table; without it, the built-in one (mu0 from --set friction.mu0=...). Results go to "
+      "--out: config.toml, samples.csv, summary.json.");
+  jam->add_option("config", args.config, "TOML configuration file with [sediment]")
+      ->check(CLI::ExistingFile);
+  jam->add_option("-o,--out", args.out, "Output folder (default: out/jam or out/<config name>)");
+  jam->add_option("-s,--set", args.overrides,
+                  "Override a config key, e.g. friction.mu0=0.4, sediment.samples=5 (repeatable)")
+      ->allow_extra_args(false);
+  jam->add_flag("-q,--quiet", args.quiet, "No progress or final messages");
+  return jam;
+}
+
+// The built-in [sediment]: every default, and the solver tolerance the
+// sedimentation tests ran at (tests/drivers/sediment_test.cpp); at the engine's
+// default, 1e-6, most steps of a resting pile end at solver.max_iterations.
+constexpr const char* kBuiltInSediment = "[sediment]\n[solver]\ntolerance = 1e-4\n";
+
+int execute_jam_command(const JamCommandArgs& args) {
+  const Config config = args.config.empty()
+                            ? parse_config(kBuiltInSediment, "<built-in>",
+                                           std::filesystem::current_path(), args.overrides)
+                            : load_config(args.config, args.overrides);
+  if (config.sediment() == nullptr)
+    throw InputError(
+        fmt::format("{}: dilatant jam needs a [sediment] table (a [cell] or "
+                    "[scene] config is run by dilatant run)",
+                    config.source));
+  RunOptions options;
+  options.quiet = args.quiet;
+  options.out_dir =
+      args.out.empty()
+          ? std::filesystem::path("out") /
+                (args.config.empty() ? std::string("jam")
+                                     : std::filesystem::path(args.config).stem().string())
+          : std::filesystem::path(args.out);
+  const SedimentOutcome outcome = run_sediment(config, options);
+  if (!args.quiet)
+    std::cout << fmt::format("dilatant: phi_max = {:.4f} +- {:.4f} (mu0 {}){}; results in {}\n",
+                             outcome.phi_max, outcome.phi_max_err, config.friction.mu0,
+                             outcome.settled ? "" : ", NOT every sample settled",
+                             options.out_dir.string());
+  if (outcome.unconverged_steps > 0)
+    std::cerr << fmt::format(
+        "dilatant: warning: {} of {} steps did not converge within solver.max_iterations = {}\n",
+        outcome.unconverged_steps, outcome.steps, config.solver.max_iterations);
+  return 0;
+}
+
+}  // namespace dilatant

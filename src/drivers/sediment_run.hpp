@@ -1,0 +1,25 @@
+#pragma once
+// `dilatant jam`: the sedimentation of a [sediment] config (drivers/sediment.hpp),
+// sample after sample, into OUT: config.toml (resolved), samples.csv (one row
+// per packing) and summary.json (phi_max, its error from the samples' scatter,
+// the fraction's sensitivity to the exclusion), each written whole or not at all.
+#include "drivers/run_options.hpp"
+#include "drivers/sediment.hpp"
+#include "io/config.hpp"
+
+namespace dilatant {
+
+// The driver's settings for sample `index` (seed + index) of a [sediment] config.
+SedimentSettings sediment_settings(const Config& config, int index);
+
+struct SedimentOutcome {
+  double phi_max = 0.0;
+  double phi_max_err = 0.0;  // standard error over the samples; 0 with one sample
+  bool settled = false;      // every sample
+  long steps = 0;
+  long unconverged_steps = 0;
+};
+
+SedimentOutcome run_sediment(const Config& config, const RunOptions& options);
+
+}  // namespace dilatant
