@@ -11,7 +11,8 @@
 #   scripts/docs-paper.sh [dilatant sweep options...]   e.g. --jobs 2
 # Environment: DILATANT_PAPER_OUT (default out/paper), DILATANT_PAPER_DOCS
 # (default docs/paper-reproduction), DILATANT_PAPER_SWEEPS (default
-# "fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi"),
+# "fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi
+# dense-window-phi"),
 # DILATANT_SKIP_BUILD=1 to use build/ as it is.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -22,7 +23,7 @@ if [[ -z ${DILATANT_SKIP_BUILD:-} ]]; then
   bash scripts/build.sh release dilatant
 fi
 status=0
-sweeps="fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi"
+sweeps="fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi dense-window-phi"
 for sweep in ${DILATANT_PAPER_SWEEPS:-$sweeps}; do
   # A failed point does not stop the others (exit 1): copy what there is, go on.
   ./build/dilatant sweep "examples/paper/$sweep.toml" --out "$out/$sweep" "$@" || status=$?

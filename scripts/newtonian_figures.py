@@ -5,6 +5,7 @@
     DOCS/newtonian-fluid/flowcurves.csv   flow curves with fluid forces, mu0 0.1 / 0.4
     DOCS/dense-window/flowcurves.csv      the literal model's dense window (optional)
     DOCS/newtonian-phi/flowcurves.csv     eta_N at several phi (optional)
+    DOCS/dense-window-phi/flowcurves.csv  the literal model against phi (optional, drawn, not fitted)
   writes DOCS/newtonian.png/.svg (eta against lambda-scaled rate per model and
   mu0) and, with newtonian-phi, DOCS/newtonian-phi/eta_n.png/.svg and
   eta_n_fit.json: the fit eta_N = A (phi_m - phi_bulk)^-beta.
@@ -129,6 +130,13 @@ def main():
         x = np.linspace(min(phi) - 0.01, result["phi_m"] - 0.002, 200)
         ax.plot(x, result["A"] * (result["phi_m"] - x) ** -result["beta"],
                 label=rf"$A(\phi_m-\phi)^{{-{result['beta']:.2f}}}$, $\phi_m$ = {result['phi_m']:.3f}")
+    literal = os.path.join(docs, "dense-window-phi", "flowcurves.csv")
+    if os.path.exists(literal):  # the literal model's level, lambda 0.3 and 1 (not fitted)
+        for lam, marker in (("0.3", "s"), ("1", "D")):
+            pts = [r for r in done(read_rows(literal)) if r.get("lambda") == lam]
+            ax.errorbar([number(r, "phi_bulk") for r in pts], [number(r, "eta") for r in pts],
+                        yerr=[number(r, "eta_err") for r in pts], marker=marker, ls="none",
+                        capsize=2, mfc="none", label=f"literal model, lambda {lam} (not fitted)")
     ax.set_yscale("log")
     ax.set_xlabel(r"$\phi_{bulk}$")
     ax.set_ylabel(r"$\eta_N$ [$\eta_f$]")
