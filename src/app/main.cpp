@@ -8,6 +8,7 @@
 #include "app/analyze_command.hpp"
 #include "app/jam_command.hpp"
 #include "app/plot_command.hpp"
+#include "app/predict_command.hpp"
 #include "app/run_command.hpp"
 #include "app/sweep_command.hpp"
 #include "dilatant/version.hpp"
@@ -29,6 +30,8 @@ int main(int argc, char** argv) {
   CLI::App* plot = dilatant::add_plot_command(app, plot_args);
   dilatant::JamCommandArgs jam_args;
   CLI::App* jam = dilatant::add_jam_command(app, jam_args);
+  dilatant::PredictCommandArgs predict_args;
+  CLI::App* predict = dilatant::add_predict_command(app, predict_args);
 
   try {
     app.parse(argc, argv);
@@ -43,6 +46,7 @@ int main(int argc, char** argv) {
     if (analyze->parsed()) return dilatant::execute_analyze_command(analyze_args);
     if (plot->parsed()) return dilatant::execute_plot_command(plot_args);
     if (jam->parsed()) return dilatant::execute_jam_command(jam_args);
+    if (predict->parsed()) return dilatant::execute_predict_command(predict_args);
   } catch (const dilatant::InputError& e) {
     std::cerr << "dilatant: error: " << e.what() << "\n";
     return 2;

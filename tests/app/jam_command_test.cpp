@@ -64,3 +64,32 @@ TEST(JamCommand, BadInputIsExit2WithOneLine) {
 
 }  // namespace
 }  // namespace dilatant
+
+namespace dilatant {
+namespace {
+
+TEST(PredictCommand, AnswersAndRefusesBadInput) {
+  test::CliDir dir;
+  std::ofstream(dir.path() / "t.csv") << "mu0,phi_max,phi_max_err\n0,0.64,0.002\n1,0.56,0.002\n";
+  const auto table = (dir.path() / "t.csv").string();
+  const auto dst = dir.run({"predict", "--mu0", "1", "--phi", "0.6", "--json", "--table", table});
+  ASSERT_EQ(dst.exit_code, 0) << dst.err;
+  const auto j = nlohmann::json::parse(dst.out);
+  EXPECT_EQ(j["regime"], "dst");
+  EXPECT_DOUBLE_EQ(j["phi_max_bl"].get<double>(), 0.56);
+  const auto cst = dir.run({"predict", "--mu0", "0.5", "--phi", "0.55", "--table", table});
+  EXPECT_EQ(cst.out.rfind("cst", 0), 0u) << cst.out;
+  for (const std::vector<std::string>& bad :
+       {std::vector<std::string>{"predict", "--mu0", "-0.1", "--phi", "0.5"},
+        {"predict", "--mu0", "0.1", "--phi", "0.74"},
+        {"predict", "--mu0", "0.1", "--phi", "0"},
+        {"predict", "--mu0", "x", "--phi", "0.5"},
+        {"predict", "--phi", "0.5"}}) {
+    const auto r = dir.run(bad);
+    EXPECT_EQ(r.exit_code, 2) << bad[2];
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace dilatant
