@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# The table phi_max_BL(mu0) of docs/jamming.md: `dilatant jam` with
-# examples/jamming/sediment.toml at every mu0 of the list, then the table and
-# the figure (scripts/jamming_figures.py). Resumable: a mu0 whose summary.json
-# exists is not run again.
+# The jamming fractions of docs/jamming.md: `dilatant jam` with
+# examples/jamming/sediment.toml at every mu0 of the list, the shear-jamming
+# sweep examples/jamming/shear-jamming.toml, then the tables and the figure
+# (scripts/jamming_figures.py), and the table into data/jamming/ (dilatant
+# predict's). Resumable: a mu0 whose summary.json exists is not run again, the
+# sweep resumes.
 #   scripts/docs-jamming.sh
 # Environment: DILATANT_JAM_OUT (default out/jamming), DILATANT_JAM_DOCS
 # (default docs/jamming), DILATANT_JAM_MU0 (default "0 0.1 0.4 1 0.2 0.3 0.6 0.05",
@@ -21,5 +23,12 @@ for mu0 in ${DILATANT_JAM_MU0:-0 0.1 0.4 1 0.2 0.3 0.6 0.05}; do
   if [[ -f $dir/summary.json ]]; then continue; fi
   "$bin" jam examples/jamming/sediment.toml --set "friction.mu0=$mu0" --out "$dir"
 done
+# Shear jamming in the cell (phi_c(mu0)); DILATANT_JAM_SHEAR=0 skips it.
+if [[ ${DILATANT_JAM_SHEAR:-1} != 0 ]]; then
+  "$bin" sweep examples/jamming/shear-jamming.toml --out "$out/shear"
+fi
 mkdir -p "$docs"
 /usr/bin/python3 scripts/jamming_figures.py "$out" "$docs"
+if [[ -f $out/shear/flowcurves.csv ]]; then cp "$out/shear/flowcurves.csv" "$docs/shear-flowcurves.csv"; fi
+# The table dilatant predict compiles in.
+cp "$docs/phi_max_bl.csv" data/jamming/phi_max_bl.csv

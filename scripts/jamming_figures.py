@@ -2,6 +2,8 @@
 
   jamming_figures.py OUT DOCS
     OUT/mu0-*/summary.json    one run per mu0 (scripts/docs-jamming.sh)
+    OUT/shear/flowcurves.csv  the shear-jamming sweep (optional,
+                              examples/jamming/shear-jamming.toml)
   writes DOCS/phi_max_bl.csv  mu0, phi_max, phi_max_err, the fraction at each
                               exclusion, samples, settled, size, Stokes number,
                               version (the provenance of every row)
@@ -10,8 +12,14 @@
                               between it and the frictionless value, no flow
                               above), the paper's four polymers marked at their
                               measured phi_max (their mu0 is not in the paper's
-                              text, so they are lines, not points)
+                              text, so they are lines, not points), and the
+                              shear-jamming phi_c(mu0) beside it
+         DOCS/shear_jamming.csv  per mu0: phi_c from a straight line
+                              phi_bulk = phi_c - b I through the flowing
+                              points, and the densest flowing and loosest
+                              jammed phi_bulk that bracket it
 """
+import csv
 import json
 import os
 import sys
@@ -55,7 +63,46 @@ def write_table(rows, docs):
     os.replace(part, docs / "phi_max_bl.csv")
 
 
-def draw(rows, docs):
+def shear_jamming(out, docs):
+    """phi_c(mu0) from the shear cell: fit and bracket, per mu0."""
+    table = out / "shear" / "flowcurves.csv"
+    if not table.exists():
+        return []
+    with open(table, newline="") as f:
+        points = [r for r in csv.DictReader(f) if r["status"] == "done"]
+    result = []
+    for mu0 in sorted({float(r["mu0"]) for r in points}):
+        rows = [r for r in points if float(r["mu0"]) == mu0]
+        flowing = [r for r in rows if r["jammed"] == "false"]
+        jammed = [r for r in rows if r["jammed"] == "true"]
+        phi = [float(r["phi_bulk"]) for r in flowing]
+        inertial = [float(r["inertial_number"]) for r in flowing]
+        entry = {"mu0": mu0, "flowing": len(flowing), "jammed": len(jammed),
+                 "phi_flowing_max": max(phi) if phi else None,
+                 "phi_jammed_min": min(float(r["phi_bulk"]) for r in jammed) if jammed else None,
+                 "phi_c": None, "slope": None}
+        if len(flowing) >= 2:
+            n = len(phi)
+            mi, mp = sum(inertial) / n, sum(phi) / n
+            sxx = sum((i - mi) ** 2 for i in inertial)
+            if sxx > 0:
+                b = sum((i - mi) * (p - mp) for i, p in zip(inertial, phi)) / sxx
+                entry["slope"] = b
+                entry["phi_c"] = mp - b * mi
+        result.append(entry)
+    lines = ["mu0,phi_c_fit,slope_dphi_dI,flowing_points,jammed_points,phi_bulk_flowing_max,"
+             "phi_bulk_jammed_min"]
+    fmt = lambda v: "" if v is None else f"{v:.5f}"
+    for e in result:
+        lines.append(f"{e['mu0']},{fmt(e['phi_c'])},{fmt(e['slope'])},{e['flowing']},"
+                     f"{e['jammed']},{fmt(e['phi_flowing_max'])},{fmt(e['phi_jammed_min'])}")
+    part = docs / "shear_jamming.csv.part"
+    part.write_text("\n".join(lines) + "\n")
+    os.replace(part, docs / "shear_jamming.csv")
+    return result
+
+
+def draw(rows, docs, shear):
     mu = [r["mu0"] for r in rows]
     phi = [r["phi_max"] for r in rows]
     err = [r["phi_max_err"] or 0.0 for r in rows]
@@ -72,6 +119,14 @@ def draw(rows, docs):
                 color="tab:red")
     ax.errorbar(mu, phi, yerr=err, marker="o", capsize=3, color="k",
                 label=r"sediment $\phi_{max}^{BL}$ (dilatant jam)")
+    fitted = [e for e in shear if e["phi_c"] is not None]
+    if fitted:
+        ax.plot([e["mu0"] for e in fitted], [e["phi_c"] for e in fitted], "s--",
+                color="tab:green", label=r"shear jamming $\phi_c$ (cell, I $\to$ 0)")
+    for e in shear:
+        if e["phi_flowing_max"] is not None and e["phi_jammed_min"] is not None:
+            ax.plot([e["mu0"]] * 2, [e["phi_flowing_max"], e["phi_jammed_min"]], color="tab:green",
+                    lw=3, alpha=0.4)
     for name, value in PAPER.items():
         ax.axhline(value, color="grey", ls=":", lw=0.8)
         ax.text(max(mu) if mu else 1.0, value, f" {name}", va="center", fontsize=7,
@@ -93,9 +148,13 @@ def main():
         sys.exit(f"{out}: no mu0-*/summary.json")
     docs.mkdir(parents=True, exist_ok=True)
     write_table(rows, docs)
-    draw(rows, docs)
+    shear = shear_jamming(out, docs)
+    draw(rows, docs, shear)
     for r in rows:
         print(f"mu0 {r['mu0']}: phi_max {r['phi_max']:.4f} +- {r['phi_max_err'] or 0:.4f}")
+    for e in shear:
+        print(f"shear jamming mu0 {e['mu0']}: phi_c {e['phi_c']}, flowing up to "
+              f"{e['phi_flowing_max']}, jammed from {e['phi_jammed_min']}")
 
 
 if __name__ == "__main__":
