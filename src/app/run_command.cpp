@@ -96,6 +96,14 @@ int execute_run_command(const RunCommandArgs& args) {
                 (args.config.empty() ? std::string("default")
                                      : std::filesystem::path(args.config).stem().string())
           : std::filesystem::path(args.out);
+  // A typo in --out must not silently cost a run from scratch.
+  if (args.resume && config.cell() && !std::filesystem::exists(options.out_dir / "checkpoint.bin"))
+    throw InputError(fmt::format(
+        "{}: --resume found no checkpoint.bin there; check --out, or run without --resume "
+        "to start anew",
+        options.out_dir.string()));
+  if (args.resume && !config.cell())
+    throw InputError("--resume continues a shear-cell run ([cell]); a scene has no checkpoint");
   if (config.cell()) return run_cell(config, options, args.resume, args.start_from);
   const SceneOutcome outcome = run_scene(config, options);
   warn_if_unconverged(config, outcome.steps, outcome.unconverged_steps);

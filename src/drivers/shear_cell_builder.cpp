@@ -11,6 +11,7 @@
 
 #include "boundary/wall_monolayer.hpp"
 #include "drivers/packing_growth.hpp"
+#include "io/input_error.hpp"
 
 namespace dilatant {
 
@@ -64,6 +65,12 @@ World build_shear_cell(const Config& config, ShearCellGeometry& geometry, RoughW
     if (volume + sphere_volume(r) > target_volume) break;
     radii.push_back(r);
     volume += sphere_volume(r);
+  }
+  if (radii.empty()) {
+    throw InputError(fmt::format(
+        "{}: cell.size = [{}, {}, {}] holds no mobile sphere at cell.phi = {} (radii up to "
+        "{}); enlarge the cell",
+        config.source, lx, ly, lz, cell.phi, cell.radius_max));
   }
   geometry.first_mobile = world.bodies.size();
   geometry.mobile_count = radii.size();

@@ -301,6 +301,27 @@ std::vector<BadInput> bad_inputs() {
                    kParticlesCsv,
                    run_config,
                    {"scene.toml", "run.time"}});
+  cases.push_back({"CellTooSmallForItsSpheres",
+                   "[cell]\nsize = [1.0, 1.0, 1.0]\n",
+                   kParticlesCsv,
+                   run_config,
+                   {"cell.size", "4 largest radii"}});
+  cases.push_back({"CellWithNoMobileSphere",
+                   "[cell]\nsize = [4.0, 4.0, 4.5]\nphi = 0.05\n",
+                   kParticlesCsv,
+                   run_config,
+                   {"scene.toml", "no mobile sphere"}});
+  cases.push_back({"ResumeWithoutACheckpoint",
+                   "[cell]\nsize = [8.0, 5.0, 9.0]\n",
+                   kParticlesCsv,
+                   {"{config}", "--resume"},
+                   {"--resume", "checkpoint.bin"}});
+  cases.push_back({"ResumeOfAScene", scene, kParticlesCsv, {"{config}", "--resume"}, {"--resume"}});
+  cases.push_back({"SedimentGivenToRun",
+                   "[sediment]\n",
+                   kParticlesCsv,
+                   run_config,
+                   {"scene.toml", "dilatant jam"}});
   return cases;
 }
 
