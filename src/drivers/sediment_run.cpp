@@ -1,6 +1,7 @@
 #include "drivers/sediment_run.hpp"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -47,15 +48,26 @@ MeanError mean_error(const std::vector<double>& x) {
   return m;
 }
 
-Sample run_sample(const Config& config, int index) {
+Sample run_sample(const Config& config, int index, bool progress) {
   Sediment sediment(sediment_settings(config, index));
   Sample s;
   s.seed = config.sediment()->seed + index;
   s.spheres = sediment.world().bodies.size();
+  auto last = std::chrono::steady_clock::now();
   while (!sediment.settled() && !sediment.timed_out()) {
     const StepReport& r = sediment.step();
     if (!r.solve.converged) ++s.unconverged;
+    if (progress && std::chrono::steady_clock::now() - last > std::chrono::milliseconds(500)) {
+      // The mean height falls from H/2 towards the sediment's; settling ends
+      // when it stops changing.
+      std::cerr << fmt::format("\rsample {}/{}: step {}, time {:.0f}, mean height {:.3f} R   ",
+                               index + 1, config.sediment()->samples, sediment.steps(),
+                               sediment.world().time, sediment.mean_height())
+                << std::flush;
+      last = std::chrono::steady_clock::now();
+    }
   }
+  if (progress) std::cerr << "\n";
   s.settled = sediment.settled();
   s.time = sediment.world().time;
   s.steps = sediment.steps();
@@ -92,7 +104,7 @@ SedimentOutcome run_sediment(const Config& config, const RunOptions& options) {
 
   std::vector<Sample> samples;
   for (int i = 0; i < c.samples; ++i) {
-    samples.push_back(run_sample(config, i));
+    samples.push_back(run_sample(config, i, !options.quiet && isatty(STDERR_FILENO)));
     const Sample& s = samples.back();
     if (!options.quiet)
       std::cout << fmt::format(
