@@ -97,7 +97,7 @@ ShearCell::StepChoice ShearCell::choose_dt() const {
   const double c = config_.solver.max_displacement;
   const double dt_drive = std::sqrt(2.0 * c * r_min * wall.mass / wall.drive_force);
   const double dt_speed = v_max > 0.0 ? c * r_min / v_max : dt_drive;
-  return {std::min(dt_drive, dt_speed), dt_drive <= dt_speed};
+  return {std::min(dt_drive, dt_speed), dt_drive <= dt_speed, dt_drive};
 }
 
 double ShearCell::total_kinetic_energy() const {
@@ -116,6 +116,15 @@ const StepReport& ShearCell::step() {
   ShearCellState& s = state_;
   const double lz = config_.cell()->size[2];
   const StepChoice choice = choose_dt();
+  // Never a silent bad number: a state that has blown up stops the run (a
+  // sweep records the point as failed with this message).
+  if (!std::isfinite(choice.dt) || choice.dt < kCollapsedStep * choice.dt_drive ||
+      !std::isfinite(s.walls.top().velocity)) {
+    throw std::runtime_error(fmt::format(
+        "numerical blow-up at step {} (strain {:.4g}): wall speed {:.3g}, time step {:.3g} "
+        "against the drive's {:.3g}; the run is stopped",
+        s.steps, s.strain, s.walls.top().velocity, choice.dt, choice.dt_drive));
+  }
   s.dt = choice.dt;
   cost_.steps_dt_by_drive += choice.by_drive ? 1.0 : 0.0;
   stepper_.set_dt(s.dt);

@@ -79,7 +79,11 @@ class ShearCell {
   struct StepChoice {
     double dt = 0.0;
     bool by_drive = false;
+    double dt_drive = 0.0;  // the drive's bound alone (0 with a fixed solver.dt)
   };
+  // A body a million times faster than the drive can make the wall in one step
+  // (the automatic step collapsed by that factor): a numerical blow-up.
+  static constexpr double kCollapsedStep = 1e-6;
   StepChoice choose_dt() const;
   double total_kinetic_energy() const;
   void accumulate(const StepReport& report);
