@@ -16,7 +16,7 @@
                               shear-jamming phi_c(mu0) beside it
          DOCS/shear_jamming.csv  per mu0: phi_c from a straight line
                               phi_bulk = phi_c - b I through the flowing
-                              points, and the densest flowing and loosest
+                              points with I <= 0.1, and the densest flowing and loosest
                               jammed phi_bulk that bracket it
 """
 import csv
@@ -26,6 +26,9 @@ import sys
 from pathlib import Path
 
 from plot_common import plt, save
+
+# Flowing shear-cell points with a larger inertial number are not fitted.
+MAX_INERTIAL = 0.1
 
 # Fernandez et al. 2013, Fig. 4: phi_max of the centrifuged sediments of the
 # four coatings (A-D). Their mu0 came from tribometer measurements not listed.
@@ -73,12 +76,16 @@ def shear_jamming(out, docs):
     result = []
     for mu0 in sorted({float(r["mu0"]) for r in points}):
         rows = [r for r in points if float(r["mu0"]) == mu0]
-        flowing = [r for r in rows if r["jammed"] == "false"]
+        # phi(I) = phi_c - b I holds in the dense, quasi-static range (I up to
+        # about 0.1; da Cruz et al. 2005); faster points are left out of the fit.
+        flowing = [r for r in rows if r["jammed"] == "false"
+                   and float(r["inertial_number"]) <= MAX_INERTIAL]
         jammed = [r for r in rows if r["jammed"] == "true"]
         phi = [float(r["phi_bulk"]) for r in flowing]
         inertial = [float(r["inertial_number"]) for r in flowing]
+        every_flowing = [float(r["phi_bulk"]) for r in rows if r["jammed"] == "false"]
         entry = {"mu0": mu0, "flowing": len(flowing), "jammed": len(jammed),
-                 "phi_flowing_max": max(phi) if phi else None,
+                 "phi_flowing_max": max(every_flowing) if every_flowing else None,
                  "phi_jammed_min": min(float(r["phi_bulk"]) for r in jammed) if jammed else None,
                  "phi_c": None, "slope": None}
         if len(flowing) >= 2:
@@ -90,7 +97,7 @@ def shear_jamming(out, docs):
                 entry["slope"] = b
                 entry["phi_c"] = mp - b * mi
         result.append(entry)
-    lines = ["mu0,phi_c_fit,slope_dphi_dI,flowing_points,jammed_points,phi_bulk_flowing_max,"
+    lines = ["mu0,phi_c_fit,slope_dphi_dI,fitted_points,jammed_points,phi_bulk_flowing_max,"
              "phi_bulk_jammed_min"]
     fmt = lambda v: "" if v is None else f"{v:.5f}"
     for e in result:
