@@ -78,14 +78,13 @@ void check_constraints(const std::function<Section(std::string_view)>& section, 
           fmt::format("must be >= cell.radius_min = {}", cell->radius_min));
     // Periodic in x and y: a sphere must not meet its own image, and the cell
     // list needs at least 4 largest radii per periodic axis (as a scene's box).
-    for (int axis = 0; axis < 2; ++axis)
-      check(s, "size", cell->size, cell->size[axis] >= 4.0 * cell->radius_max,
-            fmt::format("L{} must be at least 4 largest radii ({}) on a periodic axis", "xy"[axis],
-                        4.0 * cell -> radius_max));
-    check(s, "size", cell->size, cell->size[2] > 4.0 * cell->radius_max,
-          fmt::format("Lz must exceed 4 largest radii ({}): two walls of spheres and room "
-                      "between them",
-                      4.0 * cell->radius_max));
+    const double min_side = 4.0 * cell->radius_max;
+    for (int axis = 0; axis < 2; ++axis) {
+      const char* name = axis == 0 ? "Lx" : "Ly";
+      check(s, "size", cell->size, cell->size[axis] >= min_side,
+            fmt::format("{} must be at least 4 largest radii ({}) on a periodic axis", name,
+                        min_side));
+    }
     const Section r = section("run");
     const bool ok = c.run.transient_strain < c.run.strain;
     if (r.find("transient_strain") || !r.find("strain"))

@@ -21,6 +21,7 @@ const fs::path kExamples = fs::path(DILATANT_SOURCE_DIR) / "examples";
 // Folders of sweep files; every other .toml is a run configuration, except the
 // analysis manifest, which tests/analysis reads.
 const std::set<std::string> kSweepFolders = {"paper", "sweep"};
+const std::set<std::string> kSweepFiles = {"jamming/shear-jamming.toml"};
 const std::set<std::string> kNotConfigs = {"analysis/manifest.toml"};
 
 TEST(Examples, EveryConfigurationLoads) {
@@ -31,7 +32,7 @@ TEST(Examples, EveryConfigurationLoads) {
     if (kNotConfigs.count(relative.generic_string()) != 0) continue;
     SCOPED_TRACE(relative.generic_string());
     const std::string folder = relative.begin()->string();
-    if (kSweepFolders.count(folder) != 0) {
+    if (kSweepFolders.count(folder) != 0 || kSweepFiles.count(relative.generic_string()) != 0) {
       sweep::SweepPlan plan;
       EXPECT_NO_THROW(plan = sweep::load_sweep(entry.path(), {}));
       EXPECT_FALSE(plan.points.empty());
