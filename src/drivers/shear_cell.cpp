@@ -156,10 +156,7 @@ const StepReport& ShearCell::step() {
   s.interval.work_drive += drive_work;
   s.interval.kinetic_end = total_kinetic_energy();
   if (s.strain >= s.next_row_strain) {
-    s.rows.push_back(s.interval.close(s.world.time, s.strain));
-    s.rows.back().phi_bulk =
-        slab_volume_fraction(s.world, s.walls.body_groups(), 0.25 * lz, 0.75 * lz);
-    s.interval = IntervalSums{};
+    close_row();
     s.next_row_strain += config_.run.output_interval;
   }
   if (s.world.time - s.jam_window_time >= kJamWindow) {
@@ -214,11 +211,21 @@ void ShearCell::accumulate(const StepReport& report) {
   if (steady) s.profile.add(s.world, s.walls.body_groups(), dt);
 }
 
+// A row of the time series from the interval's sums, with the bulk fraction
+// of the state that ends it.
+void ShearCell::close_row() {
+  ShearCellState& s = state_;
+  const double lz = config_.cell()->size[2];
+  s.rows.push_back(s.interval.close(s.world.time, s.strain));
+  s.rows.back().phi_bulk =
+      slab_volume_fraction(s.world, s.walls.body_groups(), 0.25 * lz, 0.75 * lz);
+  s.interval = IntervalSums{};
+}
+
 void ShearCell::finish() {
-  if (state_.interval.steps > 0) {
-    state_.rows.push_back(state_.interval.close(state_.world.time, state_.strain));
-    state_.interval = IntervalSums{};
-  }
+  // The last, partial row (a jam's waiting time can make it long: without its
+  // bulk fraction it would pull the duration-weighted phi_bulk towards 0).
+  if (state_.interval.steps > 0) close_row();
 }
 
 }  // namespace dilatant

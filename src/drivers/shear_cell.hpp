@@ -87,6 +87,7 @@ class ShearCell {
   StepChoice choose_dt() const;
   double total_kinetic_energy() const;
   void accumulate(const StepReport& report);
+  void close_row();
 
   Config config_;
   CellUnits units_;
