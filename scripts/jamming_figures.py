@@ -130,8 +130,9 @@ def draw(rows, docs, shear):
     if fitted:
         ax.plot([e["mu0"] for e in fitted], [e["phi_c"] for e in fitted], "s--",
                 color="tab:green", label=r"shear jamming $\phi_c$ (cell, I $\to$ 0)")
-    for e in shear:
-        if e["phi_flowing_max"] is not None and e["phi_jammed_min"] is not None:
+    for e in shear:  # a bracket only where the densest flow is looser than the loosest jam
+        if (e["phi_flowing_max"] is not None and e["phi_jammed_min"] is not None
+                and e["phi_jammed_min"] > e["phi_flowing_max"]):
             ax.plot([e["mu0"]] * 2, [e["phi_flowing_max"], e["phi_jammed_min"]], color="tab:green",
                     lw=3, alpha=0.4)
     for name, value in PAPER.items():
