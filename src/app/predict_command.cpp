@@ -57,8 +57,8 @@ int execute_predict_command(const PredictCommandArgs& args) {
   }
   std::cout << fmt::format(
       "{} (phi {} against phi_max_BL({}) = {:.4f} +- {:.4f} and phi_RCP = {:.4f} +- {:.4f}{})\n",
-      analysis::flow_regime_name(p.regime), args.phi, args.mu0, p.phi_max_bl.value, p.phi_max_bl.error,
-      p.phi_rcp.value, p.phi_rcp.error,
+      analysis::flow_regime_name(p.regime), args.phi, args.mu0, p.phi_max_bl.value,
+      p.phi_max_bl.error, p.phi_rcp.value, p.phi_rcp.error,
       p.uncertain ? fmt::format("; within {:.1f} sigma of a boundary: uncertain", p.margin_sigma)
                   : "");
   if (args.mu0 > mu_max)
