@@ -65,8 +65,7 @@ Sediment::Sediment(const SedimentSettings& settings)
                         2.0 / (9.0 * relaxation_time(settings.stokes_number)))),
       // A step moves a sphere at most 2% of the smallest radius at the
       // terminal speed; the drag is implicit, so it sets no other limit.
-      stepper_(CoulombLaw{.mu0 = settings.mu0, .eta_f = 0.0},
-               settings.solver,
+      stepper_(CoulombLaw{.mu0 = settings.mu0, .eta_f = 0.0}, settings.solver,
                settings.dt > 0.0 ? settings.dt : 0.02 * settings.radius_min / terminal_speed_) {
   stepper_.set_fluid_forces(fluid_.get());
   max_time_ = settings.max_time_factor * settings.height / terminal_speed_;
