@@ -2,9 +2,9 @@
 # The jamming fractions of docs/jamming.md: `dilatant jam` with
 # examples/jamming/sediment.toml at every mu0 of the list, the shear-jamming
 # sweep examples/jamming/shear-jamming.toml, then the tables and the figure
-# (scripts/jamming_figures.py), and the table into data/jamming/ (dilatant
-# predict's). Resumable: a mu0 whose summary.json exists is not run again, the
-# sweep resumes.
+# (scripts/jamming_figures.py), the tables into data/jamming/ (dilatant
+# predict's) and the phase diagram of `dilatant predict --grid`. Resumable: a
+# mu0 whose summary.json exists is not run again, the sweep resumes.
 #   scripts/docs-jamming.sh
 # Environment: DILATANT_JAM_OUT (default out/jamming), DILATANT_JAM_DOCS
 # (default docs/jamming), DILATANT_JAM_MU0 (default "0 0.1 0.4 1 0.2 0.3 0.6 0.05",
@@ -30,5 +30,14 @@ fi
 mkdir -p "$docs"
 /usr/bin/python3 scripts/jamming_figures.py "$out" "$docs"
 if [[ -f $out/shear/flowcurves.csv ]]; then cp "$out/shear/flowcurves.csv" "$docs/shear-flowcurves.csv"; fi
-# The table dilatant predict compiles in.
+# The tables dilatant predict compiles in: phi_max_BL(mu0), and the onsets of
+# thickening measured on the dense-window flow curves (docs/jamming.md "The
+# onset scale").
 cp "$docs/phi_max_bl.csv" data/jamming/phi_max_bl.csv
+"$bin" analyze docs/paper-reproduction/dense-window/flowcurves.csv --out "$out/onsets" --no-plots -q
+/usr/bin/python3 scripts/onset_table.py --header docs/paper-reproduction/dense-window/flowcurves.csv \
+  "$out/onsets/curves.csv" literal "docs/paper-reproduction/dense-window (binary e2614d7)" \
+  > data/jamming/onsets.csv.part && mv data/jamming/onsets.csv.part data/jamming/onsets.csv
+# The phase diagram of dilatant predict --grid (from the table as built).
+"$bin" predict --grid --out "$out/phase-diagram"
+cp "$out/phase-diagram/phase_diagram.png" "$docs/"

@@ -7,80 +7,39 @@
 #include <limits>
 
 #include "analysis/delimited_text.hpp"
-#include "dilatant/jamming_table_data.hpp"
+#include "dilatant/builtin_tables.hpp"
 #include "io/input_error.hpp"
 
 namespace dilatant::analysis {
 
-namespace {
-
-std::vector<std::string> lines_of(std::string_view text) {
-  std::vector<std::string> lines;
-  std::size_t start = 0;
-  while (start < text.size()) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string_view::npos) end = text.size();
-    std::string line(text.substr(start, end - start));
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    lines.push_back(std::move(line));
-    start = end + 1;
-  }
-  return lines;
-}
-
-}  // namespace
-
-JammingTable JammingTable::parse(std::string_view csv, const std::string& source) {
-  const auto lines = lines_of(csv);
-  if (lines.empty()) throw InputError(source + ": empty jamming table");
-  const auto head = split_fields(lines[0], ',');
-  const auto column = [&](std::string_view name) {
-    const auto it = std::find(head.begin(), head.end(), name);
-    if (it == head.end())
-      throw InputError(
-          fmt::format("{}:1: no column {} (needs mu0, phi_max, phi_max_err)", source, name));
-    return static_cast<std::size_t>(it - head.begin());
-  };
-  const std::size_t c_mu = column("mu0"), c_phi = column("phi_max"), c_err = column("phi_max_err");
+JammingTable JammingTable::parse(const NumericCsv& csv) {
+  constexpr std::string_view needs = "mu0, phi_max, phi_max_err";
+  const std::size_t c_mu = csv.column("mu0", needs), c_phi = csv.column("phi_max", needs),
+                    c_err = csv.column("phi_max_err", needs);
   JammingTable t;
-  for (std::size_t k = 1; k < lines.size(); ++k) {
-    if (is_blank(lines[k])) continue;
-    const auto f = split_fields(lines[k], ',');
-    const auto number = [&](std::size_t c, std::string_view name, bool empty_is_zero) {
-      const std::string text = c < f.size() ? f[c] : std::string();
-      if (text.empty() && empty_is_zero) return 0.0;
-      const auto v = parse_number(text);
-      if (!v || !std::isfinite(*v))
-        throw InputError(
-            fmt::format("{}:{}: {} = \"{}\" is not a finite number", source, k + 1, name, text));
-      return *v;
-    };
-    JammingPoint p{number(c_mu, "mu0", false), number(c_phi, "phi_max", false),
-                   number(c_err, "phi_max_err", true)};
+  for (std::size_t r = 0; r < csv.rows(); ++r) {
+    JammingPoint p{csv.number(r, c_mu, "mu0"), csv.number(r, c_phi, "phi_max"),
+                   csv.number_or(r, c_err, "phi_max_err", 0.0)};
     const double previous = t.points_.empty() ? -1.0 : t.points_.back().mu0;
     if (t.points_.empty() ? p.mu0 != 0.0 : p.mu0 <= previous)
-      throw InputError(
-          fmt::format("{}:{}: mu0 = {}: the table must start at mu0 = 0 (the frictionless "
-                      "phi_max_HD) and increase strictly",
-                      source, k + 1, p.mu0));
+      csv.fail(r, fmt::format("mu0 = {}: the table must start at mu0 = 0 (the frictionless "
+                              "phi_max_HD) and increase strictly",
+                              p.mu0));
     if (!(p.phi_max > 0.0 && p.phi_max < 0.74) || p.phi_max_err < 0.0)
-      throw InputError(
-          fmt::format("{}:{}: phi_max = {} +- {}: must be in (0, 0.74) with a non-negative error",
-                      source, k + 1, p.phi_max, p.phi_max_err));
+      csv.fail(r, fmt::format("phi_max = {} +- {}: must be in (0, 0.74) with a non-negative error",
+                              p.phi_max, p.phi_max_err));
     t.points_.push_back(p);
   }
-  if (t.points_.empty()) throw InputError(source + ": the jamming table has no rows");
+  if (t.points_.empty()) throw InputError(csv.source() + ": the jamming table has no rows");
   return t;
 }
 
 JammingTable JammingTable::read(const std::filesystem::path& file) {
-  std::string text;
-  for (const auto& line : read_text_lines(file)) text += line + "\n";
-  return parse(text, file.string());
+  return parse(NumericCsv(read_text_lines(file), file.string()));
 }
 
 JammingTable JammingTable::builtin() {
-  return parse(kJammingTableCsv, "data/jamming/phi_max_bl.csv (built in)");
+  return parse(NumericCsv::from_text(kJammingTableCsv, "data/jamming/phi_max_bl.csv (built in)"));
 }
 
 Estimate JammingTable::phi_max_bl(double mu0) const {

@@ -11,6 +11,8 @@
 #include <string_view>
 #include <vector>
 
+#include "analysis/numeric_csv.hpp"
+
 namespace dilatant::analysis {
 
 struct JammingPoint {
@@ -26,10 +28,10 @@ struct Estimate {
 
 class JammingTable {
  public:
-  // From CSV text with (at least) the columns mu0, phi_max, phi_max_err: mu0
-  // strictly increasing from 0, phi_max in (0, 0.74). `source` names it in
-  // messages; throws InputError naming the line.
-  static JammingTable parse(std::string_view csv, const std::string& source);
+  // From a table with (at least) the columns mu0, phi_max, phi_max_err: mu0
+  // strictly increasing from 0, phi_max in (0, 0.74). Throws InputError
+  // naming the line.
+  static JammingTable parse(const NumericCsv& csv);
   static JammingTable read(const std::filesystem::path& file);
   // The table shipped with this version (data/jamming/phi_max_bl.csv).
   static JammingTable builtin();

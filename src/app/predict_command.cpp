@@ -3,11 +3,17 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "analysis/jamming_table.hpp"
+#include "analysis/onset_table.hpp"
+#include "analysis/phase_diagram.hpp"
+#include "app/python_script.hpp"
 #include "dilatant/version.hpp"
+#include "friction/defaults.hpp"
+#include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
 
 namespace dilatant {
@@ -17,25 +23,92 @@ CLI::App* add_predict_command(CLI::App& app, PredictCommandArgs& args) {
       "predict",
       "The flow regime of spheres with boundary friction mu0 at volume fraction phi, from "
       "the measured jamming fractions (docs/jamming.md): cst when phi <= phi_max_BL(mu0), "
-      "dst up to phi_RCP (the frictionless jamming fraction), no_flow above.");
-  p->add_option("--mu0", args.mu0, "boundary-lubricated friction coefficient (>= 0)")->required();
-  p->add_option("--phi", args.phi, "solid volume fraction, in (0, 0.74)")->required();
+      "dst up to phi_RCP (the frictionless jamming fraction), no_flow above; and the onset "
+      "scale of thickening, gamma_dot_c ~ C eta_f I_c^2/(s_c rho_p R^2), with I_c and C "
+      "measured on our flow curves. With --grid: the phase diagram over (mu0, phi).");
+  args.s_c = friction_defaults::kSc;
+  auto* mu0 = p->add_option("--mu0", args.mu0, "boundary-lubricated friction coefficient (>= 0)");
+  auto* phi = p->add_option("--phi", args.phi, "solid volume fraction, in (0, 0.74)");
+  p->add_option("--s-c", args.s_c,
+                "critical Sommerfeld number of the Stribeck law, for the onset scale (> 0)")
+      ->capture_default_str();
   p->add_flag("--json", args.json, "print the prediction as JSON");
   p->add_option("--table", args.table,
                 "CSV with columns mu0, phi_max, phi_max_err (default: the built-in table, "
                 "data/jamming/phi_max_bl.csv)")
       ->check(CLI::ExistingFile);
+  auto* grid = p->add_flag("--grid", args.grid,
+                           "the regime over mu0 0-1 and phi 0.50-0.66: DIR/phase_diagram.csv "
+                           "and its plot (PNG, SVG)");
+  grid->excludes(mu0)->excludes(phi);
+  p->add_option("-o,--out", args.out, "--grid's output folder (default: out/predict)");
+  p->add_flag("--no-plots", args.no_plots, "--grid: write the table only, no plot");
+  p->add_option("--python", args.python, "Python with matplotlib that draws the plot")
+      ->capture_default_str();
   return p;
 }
 
+namespace {
+
+analysis::JammingTable load_table(const std::string& file) {
+  return file.empty() ? analysis::JammingTable::builtin() : analysis::JammingTable::read(file);
+}
+
+int draw_grid(const PredictCommandArgs& args) {
+  const std::filesystem::path out = args.out.empty() ? "out/predict" : args.out;
+  std::filesystem::create_directories(out);
+  write_file_atomically(out / "phase_diagram.csv",
+                        analysis::phase_diagram_csv(load_table(args.table), {}));
+  if (!args.no_plots) {
+#ifdef DILATANT_PHASE_PLOT_SCRIPT
+    const std::string failure = run_plot_script(args.python, DILATANT_PHASE_PLOT_SCRIPT, out);
+#else
+    const std::string failure = "no plotting script in this build";
+#endif
+    if (!failure.empty())
+      std::cerr << fmt::format("dilatant: plot skipped ({}); phase_diagram.csv is complete\n",
+                               failure);
+  }
+  std::cout << fmt::format("phase diagram: {}\n", (out / "phase_diagram.csv").string());
+  return 0;
+}
+
+nlohmann::json onset_json(const analysis::OnsetPrediction& o, double s_c) {
+  if (!o.available) return nullptr;
+  return {{"rate", o.rate},
+          {"rate_unit", "eta_f/(rho_p R^2)"},
+          {"scale_I2_over_s_c", o.scale},
+          {"prefactor", o.prefactor},
+          {"inertial_number", o.measured.inertial_number},
+          {"s_c", s_c},
+          {"measured_at",
+           {{"mu0", o.measured.mu0},
+            {"phi_bulk", o.measured.phi_bulk},
+            {"s_c", o.measured.s_c},
+            {"onset_rate", o.measured.onset_rate},
+            {"model", o.measured.model},
+            {"source", o.measured.source}}}};
+}
+
+}  // namespace
+
 int execute_predict_command(const PredictCommandArgs& args) {
+  if (!(args.s_c > 0.0) || !std::isfinite(args.s_c))
+    throw InputError(fmt::format("--s-c {}: must be a finite number > 0", args.s_c));
+  if (args.grid) return draw_grid(args);
+  if (std::isnan(args.mu0) || std::isnan(args.phi))
+    throw InputError("predict needs --mu0 and --phi (or --grid for the whole diagram)");
   if (!(args.mu0 >= 0.0) || !std::isfinite(args.mu0))
     throw InputError(fmt::format("--mu0 {}: must be a finite number >= 0", args.mu0));
   if (!(args.phi > 0.0 && args.phi < 0.74))
     throw InputError(fmt::format("--phi {}: must be in (0, 0.74)", args.phi));
-  const auto table = args.table.empty() ? analysis::JammingTable::builtin()
-                                        : analysis::JammingTable::read(args.table);
+  const auto table = load_table(args.table);
   const auto p = analysis::predict_regime(table, args.mu0, args.phi);
+  // No flow, no onset: the scale is given for the flowing regimes only.
+  const auto onset =
+      p.regime == analysis::FlowRegime::NoFlow
+          ? analysis::OnsetPrediction{}
+          : analysis::predict_onset(analysis::OnsetTable::builtin(), args.mu0, args.phi, args.s_c);
   const double mu_max = table.points().back().mu0;
   if (args.json) {
     nlohmann::json j;
@@ -50,6 +123,7 @@ int execute_predict_command(const PredictCommandArgs& args) {
         std::isfinite(p.margin_sigma) ? nlohmann::json(p.margin_sigma) : nlohmann::json(nullptr);
     j["uncertain"] = p.uncertain;
     j["mu0_beyond_table"] = args.mu0 > mu_max;
+    j["onset"] = onset_json(onset, args.s_c);
     j["table"] = args.table.empty() ? "built-in" : args.table;
     j["version"] = kVersion;
     std::cout << j.dump(2) << "\n";
@@ -61,6 +135,13 @@ int execute_predict_command(const PredictCommandArgs& args) {
       p.phi_max_bl.error, p.phi_rcp.value, p.phi_rcp.error,
       p.uncertain ? fmt::format("; within {:.1f} sigma of a boundary: uncertain", p.margin_sigma)
                   : "");
+  if (onset.available)
+    std::cout << fmt::format(
+        "onset of thickening: gamma_dot_c ~ C I_c^2/s_c = {:.3g} eta_f/(rho_p R^2) at s_c {:g} "
+        "(I_c {:.3g} and C {:.3g} measured at mu0 {}, phi_bulk {:.3f}, s_c {:g}, {} model; "
+        "I_c^2/s_c alone is {:.3g}; docs/jamming.md)\n",
+        onset.rate, args.s_c, onset.measured.inertial_number, onset.prefactor, onset.measured.mu0,
+        onset.measured.phi_bulk, onset.measured.s_c, onset.measured.model, onset.scale);
   if (args.mu0 > mu_max)
     std::cout << fmt::format(
         "note: mu0 {} is beyond the table's last point ({}); its value is "

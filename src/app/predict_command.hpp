@@ -1,17 +1,28 @@
 #pragma once
-// `dilatant predict --mu0 X --phi Y [--json] [--table FILE]`: the regime the
-// paper's model assigns to spheres of boundary friction mu0 at volume fraction
-// phi (analysis/jamming_table.hpp), from the measured phi_max_BL(mu0).
+// `dilatant predict --mu0 X --phi Y [--s-c S] [--json] [--table FILE]`: the
+// regime the paper's model assigns to spheres of boundary friction mu0 at
+// volume fraction phi (analysis/jamming_table.hpp), from the measured
+// phi_max_BL(mu0), and the onset scale of thickening from our flow curves
+// (analysis/onset_table.hpp).
+// `dilatant predict --grid [--out DIR]`: the same over a grid of (mu0, phi),
+// written to DIR/phase_diagram.csv and drawn (scripts/phase_diagram.py).
 #include <CLI/CLI.hpp>
+#include <limits>
 #include <string>
 
 namespace dilatant {
 
 struct PredictCommandArgs {
-  double mu0 = 0.0;
-  double phi = 0.0;
+  // NaN: not given (required unless --grid).
+  double mu0 = std::numeric_limits<double>::quiet_NaN();
+  double phi = std::numeric_limits<double>::quiet_NaN();
+  double s_c = 0.0;  // set from friction_defaults::kSc by add_predict_command
   bool json = false;
   std::string table;  // empty: the built-in table
+  bool grid = false;
+  std::string out;  // --grid's folder (default out/predict)
+  bool no_plots = false;
+  std::string python = "/usr/bin/python3";
 };
 
 CLI::App* add_predict_command(CLI::App& app, PredictCommandArgs& args);

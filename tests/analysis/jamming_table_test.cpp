@@ -17,7 +17,7 @@ constexpr const char* kTable =
     "1,0.56,0.002,3\n";
 
 TEST(JammingTable, InterpolatesLinearlyAndHoldsTheLastValue) {
-  const auto t = JammingTable::parse(kTable, "t.csv");
+  const auto t = JammingTable::parse(NumericCsv::from_text(kTable, "t.csv"));
   EXPECT_DOUBLE_EQ(t.phi_max_bl(0.0).value, 0.64);
   EXPECT_DOUBLE_EQ(t.phi_max_bl(0.25).value, 0.61);
   EXPECT_DOUBLE_EQ(t.phi_max_bl(0.25).error, 0.003);
@@ -27,7 +27,7 @@ TEST(JammingTable, InterpolatesLinearlyAndHoldsTheLastValue) {
 }
 
 TEST(JammingTable, RegimesFollowThePapersBoundaries) {
-  const auto t = JammingTable::parse(kTable, "t.csv");
+  const auto t = JammingTable::parse(NumericCsv::from_text(kTable, "t.csv"));
   // mu0 0.5: CST up to 0.58, DST up to 0.64, no flow above.
   EXPECT_EQ(predict_regime(t, 0.5, 0.55).regime, FlowRegime::Cst);
   EXPECT_EQ(predict_regime(t, 0.5, 0.58).regime, FlowRegime::Cst);  // phi <= phi_max_BL
@@ -48,7 +48,7 @@ TEST(JammingTable, RegimesFollowThePapersBoundaries) {
 TEST(JammingTable, BadTablesNameTheLine) {
   const auto message = [](const char* csv) {
     try {
-      JammingTable::parse(csv, "t.csv");
+      JammingTable::parse(NumericCsv::from_text(csv, "t.csv"));
     } catch (const InputError& e) {
       return std::string(e.what());
     }

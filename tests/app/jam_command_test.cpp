@@ -84,11 +84,35 @@ TEST(PredictCommand, AnswersAndRefusesBadInput) {
         {"predict", "--mu0", "0.1", "--phi", "0.74"},
         {"predict", "--mu0", "0.1", "--phi", "0"},
         {"predict", "--mu0", "x", "--phi", "0.5"},
-        {"predict", "--phi", "0.5"}}) {
+        {"predict", "--phi", "0.5"},
+        {"predict", "--mu0", "0.1", "--phi", "0.5", "--s-c", "0"},
+        {"predict", "--grid", "--mu0", "0.1"}}) {
     const auto r = dir.run(bad);
     EXPECT_EQ(r.exit_code, 2) << bad[2];
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   }
+}
+
+TEST(PredictCommand, OnsetScalesAsOneOverScAndGridWritesTheDiagram) {
+  test::CliDir dir;
+  const auto at = [&](const char* s_c) {
+    const auto r = dir.run({"predict", "--mu0", "0.4", "--phi", "0.58", "--s-c", s_c, "--json"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return nlohmann::json::parse(r.out)["onset"];
+  };
+  const auto paper = at("5e-5"), ten = at("5e-4");
+  ASSERT_TRUE(paper.is_object());
+  EXPECT_NEAR(ten["rate"].get<double>() * 10.0, paper["rate"].get<double>(),
+              1e-12 * paper["rate"].get<double>());
+  // No flow, no onset.
+  const auto jammed = dir.run({"predict", "--mu0", "0.4", "--phi", "0.7", "--json"});
+  EXPECT_TRUE(nlohmann::json::parse(jammed.out)["onset"].is_null());
+  const auto grid = dir.run({"predict", "--grid", "--no-plots", "--out", dir.path().string()});
+  ASSERT_EQ(grid.exit_code, 0) << grid.err;
+  std::ifstream csv(dir.path() / "phase_diagram.csv");
+  std::string head;
+  std::getline(csv, head);
+  EXPECT_EQ(head.rfind("mu0,phi,regime", 0), 0u) << head;
 }
 
 }  // namespace

@@ -1,0 +1,63 @@
+#pragma once
+// The onset of shear thickening predicted from the paper's scaling
+// (Fernandez et al. 2013, p. 2): in the Bagnold regime the local Sommerfeld
+// number scales as s ~ eta_f I^2 / (gamma_dot rho_p R^2), so the flow can
+// leave the hydrodynamic branch only above
+//
+//     gamma_dot_c ~ eta_f I_c^2 / (s_c rho_p R^2),
+//
+// with I_c the inertial number at the onset. The paper leaves the prefactor
+// open; we measure it, with I_c, on our own flow curves
+// (data/jamming/onsets.csv, scripts/onset_table.py, docs/jamming.md "The
+// onset scale"): C = gamma_dot_c s_c rho_p R^2 / (eta_f I_c^2). Rates are in
+// eta_f/(rho_p R^2), the unit of our flow tables.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "analysis/numeric_csv.hpp"
+
+namespace dilatant::analysis {
+
+// One onset measured on a flow curve.
+struct MeasuredOnset {
+  double mu0 = 0.0;
+  double phi_bulk = 0.0;
+  double s_c = 0.0;
+  double onset_rate = 0.0;       // gamma_dot where eta exceeds 1.1 eta_N
+  double inertial_number = 0.0;  // I at that rate
+  std::string model;             // "literal", ...
+  std::string source;            // where the flow curve is documented
+};
+
+// I_c^2 / s_c: the paper's onset scale with prefactor 1, in eta_f/(rho_p R^2).
+inline double onset_rate_scale(double inertial_number, double s_c) {
+  return inertial_number * inertial_number / s_c;
+}
+
+class OnsetTable {
+ public:
+  // Columns mu0, phi_bulk, s_c, onset_rate, inertial_number (all > 0 except
+  // mu0 >= 0), model and source; throws InputError naming the line.
+  static OnsetTable parse(const NumericCsv& csv);
+  static OnsetTable builtin();  // data/jamming/onsets.csv of this version
+  const std::vector<MeasuredOnset>& onsets() const { return onsets_; }
+
+ private:
+  std::vector<MeasuredOnset> onsets_;
+};
+
+struct OnsetPrediction {
+  bool available = false;  // false when the table has no onset
+  MeasuredOnset measured;  // the onset the prediction rests on
+  double prefactor = 0.0;  // C measured on it
+  double scale = 0.0;      // I_c^2 / s_c at the asked s_c
+  double rate = 0.0;       // C I_c^2 / s_c: the predicted onset rate
+};
+
+// From the measured onset nearest in mu0 (then in phi): I_c is taken as it
+// was measured, so the prediction carries the paper's 1/s_c scaling and
+// nothing else; how I_c moves with phi is not measured (docs/jamming.md).
+OnsetPrediction predict_onset(const OnsetTable& table, double mu0, double phi, double s_c);
+
+}  // namespace dilatant::analysis

@@ -1,0 +1,74 @@
+// The onset scale of thickening (analysis/onset_table.hpp): the prefactor
+// measured on one onset reproduces that onset exactly, the prediction scales
+// as 1/s_c (the paper's gamma_dot_c ~ eta_f I^2/(s_c rho R^2)), the nearest
+// measured friction is used, and malformed rows are refused by line.
+#include "analysis/onset_table.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "io/input_error.hpp"
+
+namespace dilatant::analysis {
+namespace {
+
+constexpr const char* kOnsets =
+    "mu0,phi_bulk,s_c,onset_rate,inertial_number,model,source\n"
+    "0.1,0.61,5e-05,0.03,0.0116,literal,a\n"
+    "\n"
+    "0.4,0.61,5e-05,0.125,0.0177,literal,b\n";
+
+TEST(OnsetTable, PrefactorReproducesTheMeasuredOnsetAndScalesAsOneOverSc) {
+  const auto t = OnsetTable::parse(NumericCsv::from_text(kOnsets, "o.csv"));
+  ASSERT_EQ(t.onsets().size(), 2u);
+  const auto at = predict_onset(t, 0.4, 0.6, 5e-5);
+  ASSERT_TRUE(at.available);
+  EXPECT_EQ(at.measured.source, "b");
+  EXPECT_DOUBLE_EQ(at.scale, 0.0177 * 0.0177 / 5e-5);
+  EXPECT_NEAR(at.prefactor, 0.125 / (0.0177 * 0.0177 / 5e-5), 1e-15);
+  EXPECT_NEAR(at.rate, 0.125, 1e-12);  // C I^2/s_c at the measured s_c
+  // Ten times s_c: the contacts leave the HD branch at a rate ten times lower.
+  EXPECT_NEAR(predict_onset(t, 0.4, 0.6, 5e-4).rate, 0.0125, 1e-12);
+}
+
+TEST(OnsetTable, UsesTheNearestMeasuredFriction) {
+  const auto t = OnsetTable::parse(NumericCsv::from_text(kOnsets, "o.csv"));
+  EXPECT_EQ(predict_onset(t, 0.0, 0.6, 5e-5).measured.source, "a");
+  EXPECT_EQ(predict_onset(t, 0.2, 0.6, 5e-5).measured.source, "a");
+  EXPECT_EQ(predict_onset(t, 1.0, 0.6, 5e-5).measured.source, "b");
+  const auto empty = OnsetTable::parse(
+      NumericCsv::from_text("mu0,phi_bulk,s_c,onset_rate,inertial_number,model,source\n", "e.csv"));
+  EXPECT_FALSE(predict_onset(empty, 0.4, 0.6, 5e-5).available);
+}
+
+TEST(OnsetTable, RefusesRowsByLine) {
+  using ::testing::HasSubstr;
+  const std::string head = "mu0,phi_bulk,s_c,onset_rate,inertial_number,model,source\n";
+  for (const auto& [row, what] : std::vector<std::pair<std::string, std::string>>{
+           {"0.1,0.61,0,0.03,0.01,l,a", "o.csv:2"},
+           {"0.1,0.61,5e-5,x,0.01,l,a", "onset_rate = \"x\""},
+           {"-1,0.61,5e-5,0.03,0.01,l,a", "o.csv:2"}}) {
+    try {
+      OnsetTable::parse(NumericCsv::from_text(head + row, "o.csv"));
+      ADD_FAILURE() << row;
+    } catch (const InputError& e) {
+      EXPECT_THAT(e.what(), HasSubstr(what));
+    }
+  }
+  EXPECT_THROW(OnsetTable::parse(NumericCsv::from_text("mu0,s_c\n", "o.csv")), InputError);
+}
+
+TEST(OnsetTable, BuiltInTableIsMeasuredAndBelowThePrefactorOneScale) {
+  // The shipped onsets (docs/jamming.md "The onset scale"): every one comes
+  // before the paper's scale with prefactor 1 (C < 1: contacts slide slower
+  // and carry more than the mean field says).
+  const auto t = OnsetTable::builtin();
+  ASSERT_FALSE(t.onsets().empty());
+  for (const auto& o : t.onsets()) {
+    EXPECT_LT(o.onset_rate, onset_rate_scale(o.inertial_number, o.s_c)) << o.source;
+    EXPECT_FALSE(o.source.empty());
+  }
+}
+
+}  // namespace
+}  // namespace dilatant::analysis

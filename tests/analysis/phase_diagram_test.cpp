@@ -1,0 +1,42 @@
+// The phase diagram over (mu0, phi) (analysis/phase_diagram.hpp): every node,
+// no accumulated rounding at the grid's ends, and each node's regime the one
+// predict_regime gives there.
+#include "analysis/phase_diagram.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+namespace dilatant::analysis {
+namespace {
+
+TEST(PhaseDiagram, EveryNodeWithTheRegimeOfPredict) {
+  const auto table = JammingTable::parse(NumericCsv::from_text(
+      "mu0,phi_max,phi_max_err\n0,0.64,0.002\n0.5,0.58,0.004\n1,0.56,0.002\n", "t.csv"));
+  const PhaseGrid grid{1.0, 0.1, 0.50, 0.66, 0.02};
+  std::istringstream csv(phase_diagram_csv(table, grid));
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "mu0,phi,regime,phi_max_bl,phi_rcp,margin_sigma,uncertain");
+  int rows = 0, cst = 0, dst = 0, no_flow = 0;
+  while (std::getline(csv, line)) {
+    ++rows;
+    std::istringstream f(line);
+    std::string mu, phi, regime;
+    std::getline(f, mu, ',');
+    std::getline(f, phi, ',');
+    std::getline(f, regime, ',');
+    const auto p = predict_regime(table, std::stod(mu), std::stod(phi));
+    EXPECT_EQ(regime, flow_regime_name(p.regime)) << line;
+    cst += regime == "cst";
+    dst += regime == "dst";
+    no_flow += regime == "no_flow";
+  }
+  EXPECT_EQ(rows, 11 * 9);  // mu0 0..1 by 0.1, phi 0.50..0.66 by 0.02 (ends included)
+  EXPECT_GT(cst, 0);
+  EXPECT_GT(dst, 0);
+  EXPECT_EQ(no_flow, 11);  // phi 0.66 > 0.64 at every mu0
+}
+
+}  // namespace
+}  // namespace dilatant::analysis
