@@ -38,6 +38,8 @@ cp "$docs/phi_max_bl.csv" data/jamming/phi_max_bl.csv
 /usr/bin/python3 scripts/onset_table.py --header docs/paper-reproduction/dense-window/flowcurves.csv \
   "$out/onsets/curves.csv" literal "docs/paper-reproduction/dense-window (binary e2614d7)" \
   > data/jamming/onsets.csv.part && mv data/jamming/onsets.csv.part data/jamming/onsets.csv
+# The predictor against every flow curve of docs/paper-reproduction.
+/usr/bin/python3 scripts/predictor_checks.py "$bin" "$docs/predictor_checks.csv" docs/paper-reproduction
 # The phase diagram of dilatant predict --grid (from the table as built).
 "$bin" predict --grid --out "$out/phase-diagram"
 cp "$out/phase-diagram/phase_diagram.png" "$docs/"

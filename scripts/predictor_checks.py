@@ -1,0 +1,84 @@
+#!/usr/bin/env python3
+"""`dilatant predict` held against every flow curve in docs/paper-reproduction
+(docs/jamming.md "Cross-checks"):
+
+  predictor_checks.py DILATANT OUT.csv DIR...
+
+For each flowcurves.csv under the DIRs, each curve with two lambdas or more
+(same friction law and fluid forces, mu0, nominal phi, seed, s_c) gets its mean phi_bulk, the regime `dilatant predict`
+gives there, and what the curve did: the lambda range run, whether a point
+jammed (and the first lambda that did), and eta at the highest lambda over eta
+at the lowest (thickening when > 1). Written to OUT.csv (via OUT.csv.part).
+"""
+import csv
+import json
+import os
+import subprocess
+import sys
+import tomllib
+from collections import defaultdict
+from pathlib import Path
+
+
+def model(row, fluid):
+    """'stribeck', 'stribeck+films+drag', ...: the friction law and the fluid
+    forces of the row (a swept fluid key is a column, else the sweep's)."""
+    name = row["friction_law"]
+    if (row.get("fluid.lubrication") or fluid.get("lubrication", "none")) != "none":
+        name += "+films"
+    if (row.get("fluid.drag") or fluid.get("drag", "none")) != "none":
+        name += "+drag"
+    return name
+
+
+def curves(flow_file):
+    with open(flow_file.parent / "sweep.toml", "rb") as f:
+        fluid = tomllib.load(f).get("fluid", {})
+    groups = defaultdict(list)
+    for r in csv.DictReader(open(flow_file)):
+        if r["status"] != "done":
+            continue
+        key = (model(r, fluid), float(r["mu0"]), float(r["phi"]),
+               r.get("cell.seed") or "1", r["s_c"])
+        groups[key].append(r)
+    # A flow curve has two lambdas at least; single points are not curves.
+    return {k: v for k, v in groups.items() if len({r["lambda"] for r in v}) > 1}
+
+
+def main(argv):
+    if len(argv) < 4:
+        sys.exit(__doc__)
+    binary, out = argv[1], Path(argv[2])
+    rows = []
+    for d in argv[3:]:
+        for flow in sorted(Path(d).rglob("flowcurves.csv")):
+            for (law, mu0, phi, seed, s_c), points in sorted(curves(flow).items()):
+                points.sort(key=lambda r: float(r["lambda"]))
+                fractions = [float(r["phi_bulk"]) for r in points if r["phi_bulk"]]
+                phi_bulk = sum(fractions) / len(fractions)
+                jams = [float(r["lambda"]) for r in points if r["jammed"] == "true"]
+                flowing = [r for r in points if r["jammed"] != "true" and r["eta"]]
+                ratio = (float(flowing[-1]["eta"]) / float(flowing[0]["eta"])
+                         if len(flowing) > 1 else "")
+                p = json.loads(subprocess.run(
+                    [binary, "predict", "--mu0", str(mu0), "--phi", f"{phi_bulk:.4f}", "--json"],
+                    check=True, capture_output=True, text=True).stdout)
+                rows.append({
+                    "source": str(flow.parent), "model": law, "mu0": mu0, "phi": phi,
+                    "seed": seed, "s_c": s_c, "phi_bulk": f"{phi_bulk:.4f}",
+                    "predicted": p["regime"] + (" (uncertain)" if p["uncertain"] else ""),
+                    "phi_max_bl": p["phi_max_bl"],
+                    "lambda_min": points[0]["lambda"], "lambda_max": points[-1]["lambda"],
+                    "first_jam_lambda": min(jams) if jams else "",
+                    "eta_ratio": f"{ratio:.3g}" if ratio != "" else "",
+                })
+    part = out.with_name(out.name + ".part")
+    with open(part, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        w.writeheader()
+        w.writerows(rows)
+    os.replace(part, out)
+
+
+if __name__ == "__main__":
+    main(sys.argv)
