@@ -88,10 +88,14 @@ int execute_sweep_command(const SweepCommandArgs& args) {
     analyse_and_plot_sweep(out, !args.no_plots, args.python, args.plot_script, args.quiet);
   if (!args.quiet) {
     std::cout << fmt::format(
-        "dilatant: sweep of {} points: {} done{}, {} failed; results in {}\n", outcome.points,
+        "dilatant: sweep of {} points: {} done{}, {} failed{}; results in {}\n", outcome.points,
         outcome.done,
         outcome.skipped > 0 ? fmt::format(" ({} of them before this run)", outcome.skipped) : "",
-        outcome.failed, (out / "flowcurves.csv").string());
+        outcome.failed,
+        outcome.above_jam > 0
+            ? fmt::format(", {} not run above the jam of their ramp", outcome.above_jam)
+            : "",
+        (out / "flowcurves.csv").string());
   }
   if (outcome.failed > 0) {
     std::cerr << fmt::format(

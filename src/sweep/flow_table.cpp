@@ -73,11 +73,19 @@ std::string_view status_name(PointStatus s) {
       return "done";
     case PointStatus::Failed:
       return "failed";
+    case PointStatus::Skipped:
+      return "skipped";
     case PointStatus::Pending:
     case PointStatus::Running:
       return "pending";
   }
   return "pending";
+}
+
+bool jammed(const PointRecord& r) {
+  if (r.status != PointStatus::Done || !r.summary.is_object()) return false;
+  const auto it = r.summary.find("jammed");
+  return it != r.summary.end() && it->is_boolean() && it->get<bool>();
 }
 
 std::string sample_label(const SweepPlan& plan, const SweepPoint& point) {
@@ -99,7 +107,7 @@ std::string flowcurves_csv(const SweepPlan& plan, const std::vector<PointRecord>
   for (auto c : kSummaryBefore) header.emplace_back(c);
   header.emplace_back("phi_realized");
   for (auto c : kSummaryAfter) header.emplace_back(c);
-  for (auto c : {"sample"sv, "start"sv, "dir"sv}) header.emplace_back(c);
+  for (auto c : {"sample"sv, "start"sv, "dir"sv, "jam_cold_start"sv}) header.emplace_back(c);
 
   std::string out;
   for (std::size_t k = 0; k < header.size(); ++k) out += (k ? "," : "") + field(header[k]);
@@ -114,7 +122,8 @@ std::string flowcurves_csv(const SweepPlan& plan, const std::vector<PointRecord>
     }
     row.push_back(fmt::format("{}", p.index));
     row.emplace_back(status_name(r.status));
-    row.push_back(r.status == PointStatus::Failed ? field(r.error) : "");
+    row.push_back(
+        r.status == PointStatus::Failed || r.status == PointStatus::Skipped ? field(r.error) : "");
     row.push_back(fmt::format("{}", p.config.cell()->phi));
     row.push_back(fmt::format("{}", p.config.friction.mu0));
     row.push_back(fmt::format("{}", p.config.fluid.lambda));
@@ -124,6 +133,11 @@ std::string flowcurves_csv(const SweepPlan& plan, const std::vector<PointRecord>
     row.push_back(field(sample_label(plan, p)));
     row.push_back(p.continues_from ? field(plan.points[*p.continues_from].folder) : "cold");
     row.push_back(field(p.folder));
+    const bool confirmable = plan.settings.confirm_jams && p.continues_from && jammed(r);
+    row.push_back(!confirmable                          ? ""
+                  : !r.cold_start.is_object()           ? "pending"
+                  : r.cold_start.value("jammed", false) ? "jammed"
+                                                        : "flowed");
     for (std::size_t k = 0; k < row.size(); ++k) out += (k ? "," : "") + row[k];
     out += "\n";
   }

@@ -4,8 +4,10 @@
 // Columns, in order:
 //   the swept keys, dotted (friction.mu0, fluid.lambda, ...), as in sweep.toml;
 //   point        the point's index;
-//   status       done | failed | pending (not run yet, running, or interrupted);
-//   error        why a failed point failed (one line), else empty;
+//   status       done | failed | pending (not run yet, running, or interrupted) |
+//                skipped (above the jam of its ramp: sweep.stop_at_jam);
+//   error        why a failed point failed or a skipped one was not run (one
+//                line), else empty;
 //   phi, mu0, lambda   the curve's labels from the configuration: phi is cell.phi
 //                as requested (every point of a curve shares it; the packing's
 //                own fraction is phi_realized);
@@ -21,7 +23,10 @@
 //                " key=value" for every other swept key but lambda (dilatant
 //                analyze groups rows by phi and sample);
 //   start        "cold" (a new packing) or the folder of the point it continues from;
-//   dir          the point's run folder, relative to DIR.
+//   dir          the point's run folder, relative to DIR;
+//   jam_cold_start  for a continued point that jammed (sweep.confirm_jams):
+//                jammed | flowed (its cold start in DIR/dir/cold-start/) or
+//                pending; else empty.
 // Booleans are true/false, numbers the shortest text that reads back exactly;
 // a field with ',' or '"' is quoted (with '"' inside turned into ').
 #include <nlohmann/json.hpp>
@@ -33,14 +38,19 @@
 
 namespace dilatant::sweep {
 
-enum class PointStatus { Pending, Running, Done, Failed };
+enum class PointStatus { Pending, Running, Done, Failed, Skipped };
 std::string_view status_name(PointStatus s);  // a running point is "pending" in the table
 
 struct PointRecord {
   PointStatus status = PointStatus::Pending;
   std::string error;       // when failed
   nlohmann::json summary;  // when done: summary.json
+  // A jam's confirmation from a cold start: its summary.json once run.
+  nlohmann::json cold_start;
 };
+
+// The point ran and jammed.
+bool jammed(const PointRecord& r);
 
 std::string flowcurves_csv(const SweepPlan& plan, const std::vector<PointRecord>& records);
 

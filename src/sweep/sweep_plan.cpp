@@ -27,8 +27,9 @@ using namespace std::string_view_literals;
 
 constexpr std::string_view kSweepTable = "sweep";
 constexpr std::string_view kPointsTable = "points";
-constexpr std::array kSettingsKeys = {"jobs"sv, "continuation"sv, "continuation_strain"sv,
-                                      "continuation_transient_strain"sv};
+constexpr std::array kSettingsKeys = {
+    "jobs"sv,        "continuation"sv, "continuation_strain"sv, "continuation_transient_strain"sv,
+    "stop_at_jam"sv, "confirm_jams"sv};
 // Keys whose single value is an array: swept only when given a list of arrays.
 constexpr std::array kArrayKeys = {"cell.size"sv, "scene.gravity"sv, "scene.box"sv,
                                    "scene.periodic"sv, "scene.planes"sv};
@@ -229,10 +230,13 @@ SweepSettings read_settings(const toml::table& t, const std::string& source) {
       if (!v) fail("expected an integer");
       if (*v < 0 || *v > 4096) fail("must be in [0, 4096] (0 = one per core)");
       s.jobs = static_cast<int>(*v);
-    } else if (key.str() == "continuation") {
+    } else if (key.str() == "continuation" || key.str() == "stop_at_jam" ||
+               key.str() == "confirm_jams") {
       const auto v = node.value_exact<bool>();
       if (!v) fail("expected true or false");
-      s.continuation = *v;
+      (key.str() == "continuation"  ? s.continuation
+       : key.str() == "stop_at_jam" ? s.stop_at_jam
+                                    : s.confirm_jams) = *v;
     } else if (key.str() == "continuation_strain" || key.str() == "continuation_transient_strain") {
       const auto v = node.value<double>();
       if (!v || !node.is_number()) fail("expected a number");
@@ -250,15 +254,13 @@ SweepSettings read_settings(const toml::table& t, const std::string& source) {
                                    where(source, node, name), join(known, ", ")));
     }
   }
-  if (!s.continuation && (s.continuation_strain || s.continuation_transient_strain)) {
-    const auto* node =
-        t.get(s.continuation_strain ? "continuation_strain"sv : "continuation_transient_strain"sv);
-    throw InputError(
-        fmt::format("{}: applies to continued points only, and sweep.continuation is false",
-                    where(source, *node,
-                          s.continuation_strain ? "sweep.continuation_strain"
-                                                : "sweep.continuation_transient_strain")));
-  }
+  if (!s.continuation)
+    for (const auto name : {"continuation_strain"sv, "continuation_transient_strain"sv,
+                            "stop_at_jam"sv, "confirm_jams"sv})
+      if (const auto* node = t.get(name))
+        throw InputError(
+            fmt::format("{}: applies to continued points only, and sweep.continuation is false",
+                        where(source, *node, fmt::format("sweep.{}", name))));
   return s;
 }
 

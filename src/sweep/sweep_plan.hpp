@@ -47,6 +47,14 @@
 // run.transient_strain for every point but the first of its curve, which is
 // where the time is saved.
 //
+// A ramp that jams (issue 15, docs/sweeps.md "Ramps to the jam"): with
+// `stop_at_jam = true` (the default) the points above a jammed one are not
+// run (status `skipped`): a packing jammed at one stress stays jammed at a
+// higher one. With `confirm_jams = true` (the default) a continued point that
+// jams is run again from a cold start of the same configuration (with the
+// first point's run.strain and run.transient_strain), in its folder's
+// `cold-start/`; the table's `jam_cold_start` says whether that jammed too.
+//
 // Every point's resolved configuration is validated like a run's; an error
 // names the sweep file, line and key, and the point. Sweeps run the shear cell
 // only ([scene] is an error). Each point gets solver.threads as configured
@@ -67,6 +75,8 @@ struct SweepSettings {
   bool continuation = false;
   std::optional<double> continuation_strain;
   std::optional<double> continuation_transient_strain;
+  bool stop_at_jam = true;
+  bool confirm_jams = true;
 };
 
 struct SweepPoint {
@@ -76,6 +86,9 @@ struct SweepPoint {
   std::vector<std::string> values;            // per swept key, its value as TOML text
   Config config;                              // resolved and validated
   std::optional<std::size_t> continues_from;  // index of the point whose final state it starts from
+  // A continued point's configuration as a cold start (run.strain and
+  // run.transient_strain of a cold point): the run that confirms its jam.
+  std::optional<Config> cold_start;
 };
 
 struct SweepPlan {

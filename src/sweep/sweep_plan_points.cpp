@@ -90,6 +90,7 @@ void link_continuations(SweepPlan& plan) {
     for (std::size_t k = 1; k < chain.size(); ++k) {
       SweepPoint& p = plan.points[chain[k]];
       p.continues_from = chain[k - 1];
+      p.cold_start = p.config;
       RunConfig& run = p.config.run;
       if (s.continuation_strain) run.strain = *s.continuation_strain;
       if (s.continuation_transient_strain) run.transient_strain = *s.continuation_transient_strain;
@@ -132,6 +133,8 @@ std::string resolved_sweep_toml(const SweepPlan& plan) {
       plan.source, plan.points.size(), plan.keys.empty() ? "nothing" : join(plan.keys, ", "));
   const SweepSettings& s = plan.settings;
   out += fmt::format("\n[sweep]\njobs = {}\ncontinuation = {}\n", s.jobs, s.continuation);
+  if (s.continuation)
+    out += fmt::format("stop_at_jam = {}\nconfirm_jams = {}\n", s.stop_at_jam, s.confirm_jams);
   if (s.continuation_strain)
     out += fmt::format("continuation_strain = {}\n",
                        toml_value_text(toml::value<double>(*s.continuation_strain)));

@@ -87,6 +87,14 @@ class Sweep {
       }
       records_[p.index].status = PointStatus::Done;
       ++outcome.skipped;
+      if (needs_confirmation(p.index) &&
+          inspect_point_folder(cold_point(p), out / p.folder / kColdStart) == PointState::Done) {
+        try {
+          records_[p.index].cold_start = read_summary(out / p.folder / kColdStart / "summary.json");
+        } catch (const std::exception&) {
+          // unreadable: the confirmation runs again
+        }
+      }
     }
     write_table();
 
@@ -113,6 +121,7 @@ class Sweep {
       outcome.done += r.status == PointStatus::Done;
       outcome.failed += r.status == PointStatus::Failed;
       outcome.pending += r.status == PointStatus::Pending || r.status == PointStatus::Running;
+      outcome.above_jam += r.status == PointStatus::Skipped;
     }
     outcome.interrupted = halt_.load() && outcome.pending > 0;
     return outcome;
@@ -130,26 +139,83 @@ class Sweep {
       if (p.continues_from) continue;  // runs in its chain
       std::vector<std::size_t> unit;
       for (std::optional<std::size_t> i = p.index; i; i = next[*i])
-        if (state_[*i] != PointState::Done) unit.push_back(*i);
+        if (state_[*i] != PointState::Done || needs_confirmation(*i)) unit.push_back(*i);
       if (!unit.empty()) units.push_back(std::move(unit));
     }
     return units;
+  }
+
+  static constexpr const char* kColdStart = "cold-start";
+
+  // A continued point that jammed, whose cold start has not run yet.
+  bool needs_confirmation(std::size_t i) const {
+    std::lock_guard lock(mutex_);
+    return plan_.settings.confirm_jams && plan_.points[i].continues_from && jammed(records_[i]) &&
+           !records_[i].cold_start.is_object();
+  }
+
+  static SweepPoint cold_point(const SweepPoint& p) {
+    SweepPoint cold = p;
+    cold.config = p.cold_start.value_or(p.config);
+    cold.continues_from.reset();
+    return cold;
+  }
+
+  // The jam of continued point i, run again from a new packing in its
+  // folder's cold-start/ (resumable like a point): a ramp's jam is reported
+  // with whether the same stress jams a cold start too.
+  void confirm_jam(std::size_t i) {
+    const SweepPoint cold = cold_point(plan_.points[i]);
+    const auto folder = options_.out / plan_.points[i].folder / kColdStart;
+    const PointState state = inspect_point_folder(cold, folder);
+    try {
+      if (state != PointState::Done) {
+        CellRunOptions o;
+        o.run.out_dir = folder;
+        o.run.quiet = true;
+        o.resume = state == PointState::Resumable;
+        o.stop_requested = &halt_;
+        if (run_shear_cell(cold.config, o).interrupted) return;
+      }
+      auto summary = read_summary(folder / "summary.json");
+      std::lock_guard lock(mutex_);
+      records_[i].cold_start = std::move(summary);
+      dirty_ = true;
+      changed_.notify_all();
+    } catch (const std::exception& e) {
+      std::lock_guard lock(mutex_);
+      notes_.push_back(fmt::format("dilatant: the cold start confirming the jam of {} failed: {}",
+                                   plan_.points[i].folder, one_line(e.what())));
+    }
   }
 
   void run_point(std::size_t i) {
     if (halt_.load()) return;
     const SweepPoint& p = plan_.points[i];
     const auto folder = options_.out / p.folder;
+    if (state_[i] == PointState::Done) {  // in the unit for its jam's cold start only
+      confirm_jam(i);
+      return;
+    }
     std::filesystem::path start_from;
     if (p.continues_from) {
       const SweepPoint& before = plan_.points[*p.continues_from];
-      PointStatus status;
+      PointRecord previous;
       {
         std::lock_guard lock(mutex_);
-        status = records_[before.index].status;
+        previous = records_[before.index];
       }
-      if (status != PointStatus::Done) {
-        if (status == PointStatus::Failed)
+      if (previous.status == PointStatus::Skipped ||
+          (plan_.settings.stop_at_jam && jammed(previous))) {
+        finish(i, PointStatus::Skipped,
+               previous.status == PointStatus::Skipped
+                   ? previous.error
+                   : fmt::format("not run: the ramp jammed at {} (lambda {})", before.folder,
+                                 before.config.fluid.lambda));
+        return;
+      }
+      if (previous.status != PointStatus::Done) {
+        if (previous.status == PointStatus::Failed)
           finish(i, PointStatus::Failed,
                  fmt::format("not run: it continues from {}, which failed", before.folder));
         return;  // the predecessor was interrupted: stays pending
@@ -188,7 +254,9 @@ class Sweep {
       finish(i, PointStatus::Done, "", read_summary(folder / "summary.json"));
     } catch (const std::exception& e) {
       finish(i, PointStatus::Failed, one_line(e.what()));
+      return;
     }
+    if (needs_confirmation(i)) confirm_jam(i);
   }
 
   void finish(std::size_t i, PointStatus status, const std::string& error,
@@ -275,7 +343,7 @@ class Sweep {
   std::vector<double> baseline_;               // the watcher's
   std::atomic<bool> halt_;
   std::atomic<std::size_t> next_unit_{0};
-  std::mutex mutex_;
+  mutable std::mutex mutex_;
   std::condition_variable changed_;
   std::size_t active_ = 0;  // guarded by mutex_
   bool dirty_ = false;      // guarded by mutex_

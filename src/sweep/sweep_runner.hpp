@@ -11,7 +11,9 @@
 // one flow curve: its points in order of lambda) at a time, each run with its
 // own solver.threads (1 by default). A point that throws is recorded as failed
 // with its message and the others go on; a continued point whose predecessor
-// failed fails too ("not run: ..."). Re-running resumes (point_folder.hpp):
+// failed fails too ("not run: ..."); one above its ramp's jam is skipped and a
+// continued point that jams gets a cold start (sweep_plan.hpp, "A ramp that
+// jams"). Re-running resumes (point_folder.hpp):
 // finished points are skipped, interrupted ones continue from their
 // checkpoint, failed and pending ones run again.
 //
@@ -38,7 +40,8 @@ struct SweepOutcome {
   std::size_t done = 0;     // finished, in this invocation or before
   std::size_t skipped = 0;  // of those, finished before this invocation
   std::size_t failed = 0;
-  std::size_t pending = 0;  // not run (interrupted)
+  std::size_t pending = 0;    // not run (interrupted)
+  std::size_t above_jam = 0;  // not run: above the jam of their ramp
   bool interrupted = false;
 };
 

@@ -40,10 +40,10 @@ nlohmann::json summary(double lambda, bool jammed) {
 TEST(FlowTable, OneRowPerPointSweptKeysFirstThenStatusAndSummary) {
   const SweepPlan plan = parse_sweep(test::kTinyGrid, "s.toml", ".", {});
   std::vector<PointRecord> records(4);
-  records[0] = {PointStatus::Done, "", summary(3.0, false)};
-  records[1] = {PointStatus::Failed, "could not pack, \"really\"", {}};
-  records[2] = {PointStatus::Running, "", {}};
-  records[3] = {PointStatus::Done, "", summary(30.0, true)};
+  records[0] = {PointStatus::Done, "", summary(3.0, false), {}};
+  records[1] = {PointStatus::Failed, "could not pack, \"really\"", {}, {}};
+  records[2] = {PointStatus::Running, "", {}, {}};
+  records[3] = {PointStatus::Done, "", summary(30.0, true), {}};
   const auto rows = lines(flowcurves_csv(plan, records));
   ASSERT_EQ(rows.size(), 5u);
   EXPECT_EQ(rows[0].rfind("friction.mu0,fluid.lambda,point,status,error,phi,mu0,lambda,"
@@ -52,7 +52,7 @@ TEST(FlowTable, OneRowPerPointSweptKeysFirstThenStatusAndSummary) {
             0u)
       << rows[0];
   const auto header = analysis::split_fields(rows[0], ',');
-  EXPECT_EQ(header.back(), "dir");
+  EXPECT_EQ(header.back(), "jam_cold_start");
   const auto column = [&](std::size_t row, const std::string& name) {
     const auto fields = analysis::split_fields(rows[row], ',');
     EXPECT_EQ(fields.size(), header.size()) << rows[row];
@@ -89,10 +89,10 @@ TEST(FlowTable, AnalyzeReadsDoneRowsOnlyAndGroupsCurvesByPhiAndSample) {
   ASSERT_EQ(plan.points.size(), 4u);
   EXPECT_EQ(sample_label(plan, plan.points[1]), "mu0=0.1 law=coulomb");
   std::vector<PointRecord> records(4);
-  records[0] = {PointStatus::Done, "", summary(3.0, false)};
-  records[1] = {PointStatus::Done, "", summary(3.0, false)};
-  records[2] = {PointStatus::Done, "", summary(30.0, false)};
-  records[3] = {PointStatus::Failed, "boom", {}};
+  records[0] = {PointStatus::Done, "", summary(3.0, false), {}};
+  records[1] = {PointStatus::Done, "", summary(3.0, false), {}};
+  records[2] = {PointStatus::Done, "", summary(30.0, false), {}};
+  records[3] = {PointStatus::Failed, "boom", {}, {}};
   const auto file = dir.write("flowcurves.csv", flowcurves_csv(plan, records));
   const analysis::AnalysisInput in = analysis::read_sweep_table(file);
   // Two curves at phi 0.58: Stribeck with 2 points, Coulomb with the 1 done.

@@ -1,0 +1,96 @@
+// A stress ramp carried to the jam (sweep_plan.hpp, "A ramp that jams"): dry
+// enough and dense enough that the literal model flows on its hydrodynamic
+// branch at lambda 0.01 and jams once its contacts are boundary-lubricated
+// (mu0 1 at nominal phi 0.60, far above phi_max_BL(1) = 0.559: docs/jamming.md).
+// The jam is confirmed from a cold start, the ramp stops there, and re-running
+// the sweep neither reruns nor loses any of it.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <sstream>
+
+#include "analysis/delimited_text.hpp"
+#include "app/cli_runner.hpp"
+#include "io/input_error.hpp"
+#include "sweep/sweep_runner.hpp"
+
+namespace dilatant::sweep {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kRamp = R"(
+[cell]
+size = [8.0, 6.0, 9.0]
+phi = 0.60
+seed = 1
+[friction]
+law = "stribeck"
+mu0 = 1.0
+[fluid]
+lambda = [0.01, 10000.0, 100000.0]
+lubrication = "none"
+drag = "none"
+[solver]
+tolerance = 1e-4
+[run]
+strain = 0.2
+transient_strain = 0.1
+snapshot_interval = 0.0
+[sweep]
+continuation = true
+)";
+
+std::map<std::string, std::string> row(const fs::path& table, std::size_t k) {
+  std::istringstream in(test::read_text(table));
+  std::string line;
+  std::getline(in, line);
+  const auto head = analysis::split_fields(line, ',');
+  for (std::size_t i = 0; i <= k; ++i) std::getline(in, line);
+  const auto f = analysis::split_fields(line, ',');
+  std::map<std::string, std::string> out;
+  for (std::size_t c = 0; c < head.size(); ++c) out[head[c]] = c < f.size() ? f[c] : "";
+  return out;
+}
+
+TEST(RampToJam, StopsAtTheFirstJamAndConfirmsItFromAColdStart) {
+  test::TempDir dir;
+  const SweepPlan plan = parse_sweep(kRamp, "ramp.toml", ".", {});
+  SweepRunOptions o;
+  o.out = dir.path();
+  const SweepOutcome first = run_sweep(plan, o);
+  const fs::path table = dir.path() / "flowcurves.csv";
+  auto flowing = row(table, 0), jam = row(table, 1), above = row(table, 2);
+  ASSERT_EQ(flowing["status"], "done") << flowing["error"];
+  EXPECT_EQ(flowing["jammed"], "false");
+  EXPECT_EQ(flowing["jam_cold_start"], "");  // flowed: nothing to confirm
+  ASSERT_EQ(jam["status"], "done") << jam["error"];
+  EXPECT_EQ(jam["jammed"], "true");
+  EXPECT_EQ(jam["jam_cold_start"], "jammed");
+  EXPECT_TRUE(fs::is_regular_file(dir.path() / jam["dir"] / "cold-start" / "summary.json"));
+  EXPECT_EQ(above["status"], "skipped");
+  EXPECT_NE(above["error"].find(jam["dir"]), std::string::npos) << above["error"];
+  EXPECT_EQ(first.done, 2u);
+  EXPECT_EQ(first.above_jam, 1u);
+
+  // Again: everything is on disk, nothing runs, the table is the same.
+  const auto before = test::read_text(dir.path() / jam["dir"] / "cold-start" / "summary.json");
+  const SweepOutcome again = run_sweep(plan, o);
+  EXPECT_EQ(again.skipped, 2u);
+  EXPECT_EQ(row(table, 1)["jam_cold_start"], "jammed");
+  EXPECT_EQ(row(table, 2)["status"], "skipped");
+  EXPECT_EQ(test::read_text(dir.path() / jam["dir"] / "cold-start" / "summary.json"), before);
+}
+
+TEST(RampToJam, BothRulesCanBeTurnedOffAndAreRefusedWithoutContinuation) {
+  const SweepPlan plan =
+      parse_sweep(kRamp, "ramp.toml", ".", {"sweep.stop_at_jam=false", "sweep.confirm_jams=false"});
+  EXPECT_FALSE(plan.settings.stop_at_jam);
+  EXPECT_FALSE(plan.settings.confirm_jams);
+  EXPECT_THROW(
+      parse_sweep(kRamp, "ramp.toml", ".", {"sweep.continuation=false", "sweep.stop_at_jam=true"}),
+      InputError);
+}
+
+}  // namespace
+}  // namespace dilatant::sweep
