@@ -26,10 +26,14 @@ done
 # Shear jamming in the cell (phi_c(mu0)); DILATANT_JAM_SHEAR=0 skips it.
 if [[ ${DILATANT_JAM_SHEAR:-1} != 0 ]]; then
   "$bin" sweep examples/jamming/shear-jamming.toml --out "$out/shear"
+  "$bin" sweep examples/jamming/shear-jamming-refine.toml --out "$out/shear-refine"
 fi
 mkdir -p "$docs"
 /usr/bin/python3 scripts/jamming_figures.py "$out" "$docs"
 if [[ -f $out/shear/flowcurves.csv ]]; then cp "$out/shear/flowcurves.csv" "$docs/shear-flowcurves.csv"; fi
+if [[ -f $out/shear-refine/flowcurves.csv ]]; then
+  cp "$out/shear-refine/flowcurves.csv" "$docs/shear-refine-flowcurves.csv"
+fi
 # The tables dilatant predict compiles in: phi_max_BL(mu0), and the onsets of
 # thickening measured on the dense-window flow curves (docs/jamming.md "The
 # onset scale").

@@ -4,6 +4,8 @@
     OUT/mu0-*/summary.json    one run per mu0 (scripts/docs-jamming.sh)
     OUT/shear/flowcurves.csv  the shear-jamming sweep (optional,
                               examples/jamming/shear-jamming.toml)
+    OUT/shear-refine/flowcurves.csv  the points between its brackets (optional,
+                              examples/jamming/shear-jamming-refine.toml)
   writes DOCS/phi_max_bl.csv  mu0, phi_max, phi_max_err, the fraction at each
                               exclusion, samples, settled, size, Stokes number,
                               version (the provenance of every row)
@@ -26,6 +28,10 @@ import sys
 from pathlib import Path
 
 from plot_common import plt, save
+
+# The shear-jamming sweeps under OUT: examples/jamming/shear-jamming.toml and
+# the points between its brackets, examples/jamming/shear-jamming-refine.toml.
+SHEAR_SWEEPS = ["shear", "shear-refine"]
 
 # Flowing shear-cell points with a larger inertial number are not fitted.
 MAX_INERTIAL = 0.1
@@ -68,11 +74,14 @@ def write_table(rows, docs):
 
 def shear_jamming(out, docs):
     """phi_c(mu0) from the shear cell: fit and bracket, per mu0."""
-    table = out / "shear" / "flowcurves.csv"
-    if not table.exists():
+    points = []
+    for name in SHEAR_SWEEPS:
+        table = out / name / "flowcurves.csv"
+        if table.exists():
+            with open(table, newline="") as f:
+                points += [r for r in csv.DictReader(f) if r["status"] == "done"]
+    if not points:
         return []
-    with open(table, newline="") as f:
-        points = [r for r in csv.DictReader(f) if r["status"] == "done"]
     result = []
     for mu0 in sorted({float(r["mu0"]) for r in points}):
         rows = [r for r in points if float(r["mu0"]) == mu0]

@@ -16,6 +16,11 @@ struct AnalysisSettings {
   // The automatic thickening window starts with this many points at the top of
   // the ramp and grows down towards the onset while the curve stays straight.
   int min_window_points = 4;
+  // A CST curve is Bagnold (n = 1) only when its interval of n lies inside
+  // (1/f, f): an interval of 0.7-11.8 contains 1 but cannot tell Bagnold from
+  // much steeper thickening. f = 3 puts the bounds halfway, in b = 1/(n+1),
+  // between Bagnold (b = 0.5) and the Newtonian (1) and plateau (0) limits.
+  double bagnold_resolution = 3.0;
   // Of the confidence intervals n_low..n_high.
   double confidence = 0.95;
   // No point is trusted better than this relative precision of the shear rate

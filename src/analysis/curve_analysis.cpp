@@ -185,6 +185,11 @@ std::string_view regime_name(Regime r) {
   return "";
 }
 
+bool bagnold_holds(double n_low, double n_high, const AnalysisSettings& s) {
+  const double f = s.bagnold_resolution;
+  return n_low <= 1.0 && 1.0 <= n_high && n_low > 1.0 / f && n_high < f;
+}
+
 std::string_view dst_evidence_name(DstEvidence e) {
   switch (e) {
     case DstEvidence::None:
@@ -269,7 +274,7 @@ CurveResult analyse_curve(const FlowCurve& curve, const AnalysisSettings& s) {
   } else {
     r.regime = Regime::Cst;
     // Step 7: Bagnold scaling, n = 1, within the interval.
-    r.bagnold = r.n_low <= 1.0 && 1.0 <= r.n_high;
+    r.bagnold = bagnold_holds(r.n_low, r.n_high, s);
   }
   return r;
 }

@@ -40,7 +40,10 @@
 //     unresolved by the same rules.
 //  7. Bagnold check, CST curves only: eta ∝ gamma_dot (n = 1, the Bagnold
 //     scaling of dense granular flow, tau ∝ gamma_dot^2) holds when the interval
-//     n_low..n_high contains 1.
+//     n_low..n_high contains 1 and is narrow enough to tell it from its
+//     neighbours: it lies inside (1/f, f) with f = bagnold_resolution (3), i.e.
+//     b = 1/(n+1) is known to within +-0.25 of Bagnold's 0.5, halfway to the
+//     Newtonian b = 1 and to a rate plateau b = 0 (bagnold_holds).
 //
 // Local slope, per fit point k: d ln eta / d ln gamma_dot = 1/b_k - 1 with
 // b_k = d ln gamma_dot / d ln tau between its neighbouring fit points (centred
@@ -60,6 +63,9 @@ namespace dilatant::analysis {
 
 enum class Regime { Newtonian, Cst, Dst, Unresolved, Jammed };
 enum class DstEvidence { None, RateNotIncreasing, ExponentAboveCap, Jammed };
+
+// Rule 7 on an interval of n.
+bool bagnold_holds(double n_low, double n_high, const AnalysisSettings& s);
 
 std::string_view regime_name(Regime r);  // newtonian | cst | dst | unresolved | jammed
 std::string_view dst_evidence_name(

@@ -308,6 +308,39 @@ TEST(CurveAnalysis, BagnoldCheckHoldsForNOneAndFailsForNThree) {
   EXPECT_FALSE(analyse_curve(model.curve(), AnalysisSettings{}).bagnold.has_value());
 }
 
+// The width rule: containing n = 1 is not enough, the interval must tell
+// Bagnold from steeper thickening and from a plateau (inside (1/3, 3)).
+TEST(CurveAnalysis, BagnoldNeedsANarrowIntervalAroundOne) {
+  const AnalysisSettings s;
+  EXPECT_FALSE(bagnold_holds(0.70, 11.8, s));  // contains 1, but reaches n = 11.8
+  EXPECT_FALSE(bagnold_holds(0.2, 1.5, s));    // cannot exclude a near plateau
+  EXPECT_FALSE(bagnold_holds(1.2, 2.0, s));    // narrow, but excludes 1
+  EXPECT_TRUE(bagnold_holds(0.8, 1.3, s));
+  EXPECT_TRUE(bagnold_holds(0.34, 2.9, s));  // just inside the bounds
+  // A real curve: the literal model at phi 0.59, mu0 0.3 (fig2 of
+  // docs/paper-reproduction, flowcurves.csv: stress, rate, its error, valid).
+  // Three curved points in the window give n = 2.0 in 0.70-11.8, which the
+  // old rule (contains 1) read as Bagnold.
+  FlowCurve curve;
+  curve.sample = "mu0=0.3";
+  curve.phi = 0.59;
+  const double rows[7][4] = {{1, 0.09679998896596474, 0.0012233807081534736, 0},
+                             {9, 0.4448109932126526, 0.0025656380010803063, 0},
+                             {100, 1.8193525911432447, 0.010142925724802533, 0},
+                             {400, 3.867510359544147, 0.032580134527169964, 1},
+                             {2500, 8.563898889529982, 0.06290672893292741, 1},
+                             {10000, 13.948468261944724, 0.11612470895559443, 1},
+                             {40000, 20.83089624053043, 0.35463760374781333, 1}};
+  for (const auto& r : rows)
+    curve.points.push_back({r[0], r[1], r[0] / r[1], r[2], r[3] != 0.0, false, 0});
+  const CurveResult fig2 = analyse_curve(curve, s);
+  ASSERT_EQ(fig2.regime, Regime::Cst);
+  EXPECT_NEAR(fig2.n_low, 0.70, 0.01);
+  EXPECT_NEAR(fig2.n_high, 11.8, 0.1);
+  ASSERT_TRUE(fig2.bagnold.has_value());
+  EXPECT_FALSE(*fig2.bagnold);
+}
+
 // Jammed: no point of the curve flows. A curve that flows at low stress and
 // jams above is DST, whatever the number of flowing points.
 TEST(CurveAnalysis, ACurveThatNeverFlowsIsJammedAndOneThatStopsIsDst) {
