@@ -137,7 +137,7 @@ def draw(rows, docs, shear):
                 label=r"sediment $\phi_{max}^{BL}$ (dilatant jam)")
     fitted = [e for e in shear if e["phi_c"] is not None]
     if fitted:
-        ax.plot([e["mu0"] for e in fitted], [e["phi_c"] for e in fitted], "s--",
+        ax.plot([e["mu0"] for e in fitted], [e["phi_c"] for e in fitted], "s", ls="none",
                 color="tab:green", label=r"shear jamming $\phi_c$ (cell, I $\to$ 0)")
     for e in shear:  # a bracket only where the densest flow is looser than the loosest jam
         if (e["phi_flowing_max"] is not None and e["phi_jammed_min"] is not None
