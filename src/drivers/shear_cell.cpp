@@ -85,6 +85,12 @@ ShearCell ShearCell::continued(Config config, const std::filesystem::path& check
 // c = solver.max_displacement (default 0.02) times r_min in one step, neither at
 // its current speed nor, from rest, under the wall's drive:
 //     dt = min(c r_min / v_max, sqrt(2 c r_min / a_wall)).
+// An overlap left by an unconverged step is pushed out at |g|/dt, so a shorter
+// step pushes it faster; the fastest body sets the next step, so past a point
+// speed and step feed each other until the run blows up (a cold start at
+// phi 0.64 did: docs/model.md "Overlap push-out"). The solver therefore pushes
+// overlaps out no faster than c r_min / dt_drive: a push-out alone never asks
+// for a step shorter than the drive's, whatever the step.
 ShearCell::StepChoice ShearCell::choose_dt() const {
   if (config_.solver.dt > 0.0) return {config_.solver.dt, false};
   const Bodies& b = state_.world.bodies;
@@ -97,7 +103,7 @@ ShearCell::StepChoice ShearCell::choose_dt() const {
   const double c = config_.solver.max_displacement;
   const double dt_drive = std::sqrt(2.0 * c * r_min * wall.mass / wall.drive_force);
   const double dt_speed = v_max > 0.0 ? c * r_min / v_max : dt_drive;
-  return {std::min(dt_drive, dt_speed), dt_drive <= dt_speed, dt_drive};
+  return {std::min(dt_drive, dt_speed), dt_drive <= dt_speed, dt_drive, c * r_min / dt_drive};
 }
 
 double ShearCell::total_kinetic_energy() const {
@@ -128,6 +134,7 @@ const StepReport& ShearCell::step() {
   s.dt = choice.dt;
   cost_.steps_dt_by_drive += choice.by_drive ? 1.0 : 0.0;
   stepper_.set_dt(s.dt);
+  stepper_.set_max_push_out(choice.max_push_out);
   const SlidingWall& wall = s.walls.top();
   if (s.interval.steps == 0.0) s.interval.kinetic_start = total_kinetic_energy();
   // Work of the drive over the prediction, F dt (V + V_free)/2: exactly the

@@ -80,6 +80,9 @@ class ShearCell {
     double dt = 0.0;
     bool by_drive = false;
     double dt_drive = 0.0;  // the drive's bound alone (0 with a fixed solver.dt)
+    // Fastest push-out of an overlap, c r_min / dt_drive (choose_dt(); none with
+    // a fixed solver.dt, whose step no speed can shorten).
+    double max_push_out = kNoPushOutCap;
   };
   // A body a million times faster than the drive can make the wall in one step
   // (the automatic step collapsed by that factor): a numerical blow-up.

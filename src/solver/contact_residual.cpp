@@ -19,10 +19,11 @@ struct Sums {
 
 template <class Law>
 void add_range(std::span<const Contact> contacts, const Bodies& b, const Law& law, double dt,
-               Sums& s) {
+               double max_push_out, Sums& s) {
   const double inv_dt = 1.0 / dt;
   for (const Contact& c : contacts) {
-    const LocalAnswer a = solve_local(c, b, law, dt, inv_dt, 1.0, imposed_branch(c, true));
+    const LocalAnswer a =
+        solve_local(c, b, law, dt, inv_dt, 1.0, imposed_branch(c, true), max_push_out);
     const double dn = std::abs(a.p_n + a.p_lub - c.p_n - c.p_lub);
     const double dp_t = (a.p_t - c.p_t).norm();
     s.normal_max = std::max(s.normal_max, dn);
@@ -41,7 +42,8 @@ void add_range(std::span<const Contact> contacts, const Bodies& b, const Law& la
 
 ContactResidual contact_residual(const std::vector<Contact>& contacts, const SlabPartition& slabs,
                                  const Bodies& bodies, const FrictionLaw& law,
-                                 const FrictionLaw& boundary_law, double dt, int threads) {
+                                 const FrictionLaw& boundary_law, double dt, int threads,
+                                 double max_push_out) {
   // Read-only, so the slabs are independent: summed per slab, then added in
   // slab order, which gives the same bits for any number of threads.
   std::vector<Sums> per_slab(static_cast<std::size_t>(slabs.count()));
@@ -54,8 +56,10 @@ ContactResidual contact_residual(const std::vector<Contact>& contacts, const Sla
     const std::span<const Contact> boundary(contacts.data() + slabs.boundary_begin[ks],
                                             slabs.begin[ks + 1] - slabs.boundary_begin[ks]);
     Sums& slab = per_slab[ks];
-    std::visit([&](const auto& l) { add_range(particles, bodies, l, dt, slab); }, law);
-    std::visit([&](const auto& l) { add_range(boundary, bodies, l, dt, slab); }, boundary_law);
+    std::visit([&](const auto& l) { add_range(particles, bodies, l, dt, max_push_out, slab); },
+               law);
+    std::visit([&](const auto& l) { add_range(boundary, bodies, l, dt, max_push_out, slab); },
+               boundary_law);
   }
   Sums s;
   for (const Sums& slab : per_slab) {

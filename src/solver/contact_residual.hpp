@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "friction/friction_law.hpp"
+#include "solver/local_problem.hpp"
 #include "solver/slab_partition.hpp"
 #include "world/bodies.hpp"
 
@@ -37,9 +38,11 @@ struct ContactResidual {
 // The residual of the current impulses of `contacts` (ordered by `slabs`: the
 // contacts of each slab's boundary range obey `boundary_law`), reading the
 // bodies' current velocities. Reads only; `threads` share the slabs, with the
-// same result for any number of them.
+// same result for any number of them. Overlaps are measured against the
+// push-out the solver was allowed (max_push_out, solver/local_problem.hpp).
 ContactResidual contact_residual(const std::vector<Contact>& contacts, const SlabPartition& slabs,
                                  const Bodies& bodies, const FrictionLaw& law,
-                                 const FrictionLaw& boundary_law, double dt, int threads = 1);
+                                 const FrictionLaw& boundary_law, double dt, int threads = 1,
+                                 double max_push_out = kNoPushOutCap);
 
 }  // namespace dilatant

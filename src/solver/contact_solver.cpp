@@ -14,14 +14,14 @@ namespace {
 // partial passes that follow visit only those (see "Open contacts" in the header).
 template <class Law>
 SweepChange sweep(std::span<Contact> contacts, const std::vector<std::int32_t>* only, Bodies& b,
-                  const Law& law, double dt, double relaxation, bool freeze_branches, Vec3* changes,
-                  std::vector<std::int32_t>* loaded) {
+                  const Law& law, double dt, double relaxation, double max_push_out,
+                  bool freeze_branches, Vec3* changes, std::vector<std::int32_t>* loaded) {
   SweepChange change;
   const double inv_dt = 1.0 / dt;
   const auto visit = [&](std::size_t k) {
     Contact& c = contacts[k];
-    const LocalAnswer a =
-        solve_local(c, b, law, dt, inv_dt, relaxation, imposed_branch(c, freeze_branches));
+    const LocalAnswer a = solve_local(c, b, law, dt, inv_dt, relaxation,
+                                      imposed_branch(c, freeze_branches), max_push_out);
     const double p_n = a.p_n;
     const Vec3& p_t = a.p_t;
     const TangentialSolution& t = a.tangential;
@@ -75,14 +75,14 @@ double round_off_floor_squared(const std::vector<Contact>& contacts, const Bodie
 
 SweepChange sweep_range(std::vector<Contact>& contacts, std::size_t begin, std::size_t end,
                         Bodies& bodies, const FrictionLaw& law, double dt, double relaxation,
-                        bool freeze, std::vector<Vec3>* changes = nullptr,
+                        double max_push_out, bool freeze, std::vector<Vec3>* changes = nullptr,
                         const std::vector<std::int32_t>* only = nullptr,
                         std::vector<std::int32_t>* loaded = nullptr) {
   std::span<Contact> part(contacts.data() + begin, end - begin);
   Vec3* out = changes != nullptr ? changes->data() + begin : nullptr;
   return std::visit(
       [&](const auto& l) {
-        return sweep(part, only, bodies, l, dt, relaxation, freeze, out, loaded);
+        return sweep(part, only, bodies, l, dt, relaxation, max_push_out, freeze, out, loaded);
       },
       law);
 }
@@ -115,7 +115,7 @@ void conjugate_gradient_step(std::vector<Contact>& contacts, Bodies& bodies,
 
 SweepChange gauss_seidel_sweep(std::vector<Contact>& contacts, Bodies& bodies,
                                const FrictionLaw& law, double dt) {
-  return sweep_range(contacts, 0, contacts.size(), bodies, law, dt, 1.0, false);
+  return sweep_range(contacts, 0, contacts.size(), bodies, law, dt, 1.0, kNoPushOutCap, false);
 }
 
 SolveReport solve_contacts(std::vector<Contact>& contacts, Bodies& bodies, const FrictionLaw& law,
@@ -149,6 +149,7 @@ SolveReport solve_contacts(const ContactProblem& problem, const SolverSettings& 
   // sweep may already write the next sweep's sums while another still reads.
   std::vector<SweepChange> partial(2 * static_cast<std::size_t>(n));
   const double omega = settings.relaxation;
+  const double push_out = settings.max_push_out;
   const bool accelerate = settings.acceleration == Acceleration::ConjugateGradient;
   std::vector<Vec3> changes, direction;
   if (accelerate) {
@@ -166,11 +167,11 @@ SolveReport solve_contacts(const ContactProblem& problem, const SolverSettings& 
     std::vector<std::int32_t>* list = skip_open ? &loaded[2 * ks] : nullptr;
     std::vector<std::int32_t>* list_boundary = skip_open ? &loaded[2 * ks + 1] : nullptr;
     const std::size_t mid = slabs.boundary_begin[ks];
-    SweepChange ch = sweep_range(contacts, slabs.begin[ks], mid, bodies, law, dt, omega, freeze,
-                                 out, full ? nullptr : list, full ? list : nullptr);
+    SweepChange ch = sweep_range(contacts, slabs.begin[ks], mid, bodies, law, dt, omega, push_out,
+                                 freeze, out, full ? nullptr : list, full ? list : nullptr);
     const SweepChange ch_boundary =
-        sweep_range(contacts, mid, slabs.begin[ks + 1], bodies, boundary_law, dt, omega, freeze,
-                    out, full ? nullptr : list_boundary, full ? list_boundary : nullptr);
+        sweep_range(contacts, mid, slabs.begin[ks + 1], bodies, boundary_law, dt, omega, push_out,
+                    freeze, out, full ? nullptr : list_boundary, full ? list_boundary : nullptr);
     const std::size_t visits =
         full ? slabs.begin[ks + 1] - slabs.begin[ks] : list->size() + list_boundary->size();
     partial[static_cast<std::size_t>((sweep & 1) * n + k)] = {

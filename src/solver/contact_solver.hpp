@@ -106,6 +106,9 @@ struct SolverSettings {
   // Sweeps in between full ones visit only the contacts that carried an impulse
   // after the last full sweep ("Open contacts" above; not with the acceleration).
   bool skip_open_contacts = false;
+  // Fastest push-out of an overlap (solver/local_problem.hpp, gap_rate()): no cap
+  // unless a driver that chooses dt from the fastest body sets one.
+  double max_push_out = kNoPushOutCap;
   // What runs use unless solver.relaxation says otherwise: the same answer in
   // fewer sweeps (paper cell: 229 -> 145 with coulomb 0.3, 92 -> 74 with
   // stribeck at lambda 100); 1.6 stalls (bench/RESULTS.md).

@@ -5,6 +5,7 @@
 // contact; the residual (solver/contact_residual.hpp) measures how far each
 // contact's impulse still is from it.
 #include <algorithm>
+#include <limits>
 
 #include "detection/contact.hpp"
 #include "friction/tangential_problem.hpp"
@@ -51,6 +52,21 @@ inline FrictionBranch imposed_branch(const Contact& c, bool frozen) {
   return FrictionBranch::Any;
 }
 
+// The end-of-step normal velocity the contact asks for is u_n >= -g/dt: a gap
+// g >= 0 may close exactly, an overlap (g < 0: left by an earlier step the
+// solver ended before convergence) is pushed out at |g|/dt, but never faster
+// than `max_push_out`. The cap is the "maximum penetration-correction velocity"
+// of game-physics solvers (Catto, Box2D's contactPushMaxVelocity; Jolt's
+// max_penetration_distance): without it the push-out grows as dt shrinks, and
+// with an automatic step dt = c r_min / v_max it feeds the very speed that
+// shortens the next step (docs/model.md "Overlap push-out"). It only acts on
+// overlaps and only while |g| > dt max_push_out: a converged, overlap-free
+// step never meets it; a capped overlap is removed over several steps.
+inline constexpr double kNoPushOutCap = std::numeric_limits<double>::infinity();
+inline double gap_rate(double gap, double inv_dt, double max_push_out) {
+  return std::max(gap * inv_dt, -max_push_out);
+}
+
 struct LocalAnswer {
   double p_n = 0.0;
   Vec3 p_t = Vec3::Zero();
@@ -62,9 +78,9 @@ struct LocalAnswer {
 // other contacts frozen. Its impulse is p_lub = -k u_n+ (fluid/squeeze_film.hpp)
 // and u_n+ = u_n_free + w_n (p_n + p_lub), so with the contact open (p_n = 0)
 //     u_n+ = u_n_free / (1 + w_n k).
-// If that keeps the gap open at the end of the step (g + dt u_n+ >= 0) it is the
-// answer. Otherwise the surfaces touch: u_n+ = -g/dt, the film carries
-// p_lub = k g/dt and the contact the rest,
+// If that keeps the gap open at the end of the step (g/dt + u_n+ >= 0, with
+// rate = g/dt as gap_rate() caps it) it is the answer. Otherwise the surfaces
+// touch: u_n+ = -g/dt, the film carries p_lub = k g/dt and the contact the rest,
 //     p_n = (-g/dt - u_n_free) / w_n - k g/dt,
 // which is > 0 exactly when the open answer failed (for g >= 0). A touching pair
 // thus takes its film's resistance up to contact and Signorini's beyond: the
@@ -73,20 +89,21 @@ struct NormalAnswer {
   double p_n = 0.0;
   double p_lub = 0.0;
 };
-inline NormalAnswer solve_normal_with_film(double u_n_free, double gap, double w_n, double k,
-                                           double dt, double inv_dt) {
+inline NormalAnswer solve_normal_with_film(double u_n_free, double rate, double w_n, double k) {
   const double u_open = u_n_free / (1.0 + w_n * k);
-  if (gap + dt * u_open >= 0.0) return {0.0, -k * u_open};
-  const double u_touch = -gap * inv_dt;
+  if (rate + u_open >= 0.0) return {0.0, -k * u_open};
+  const double u_touch = -rate;
   const double p_lub = -k * u_touch;
   return {std::max(0.0, (u_touch - u_n_free) / w_n - p_lub), p_lub};
 }
 
 // The local answer of contact c, over-relaxed in its normal part by `relaxation`
 // (1: the exact local solution). The squeeze film's impulse is always exact.
+// Overlaps are pushed out no faster than max_push_out (gap_rate()).
 template <class Law>
 inline LocalAnswer solve_local(const Contact& c, const Bodies& b, const Law& law, double dt,
-                               double inv_dt, double relaxation, FrictionBranch branch) {
+                               double inv_dt, double relaxation, FrictionBranch branch,
+                               double max_push_out = kNoPushOutCap) {
   const Vec3 u = relative_velocity(c, b);
   const double u_n = u.dot(c.normal);
   // Free velocities: remove this contact's own current impulses.
@@ -96,13 +113,13 @@ inline LocalAnswer solve_local(const Contact& c, const Bodies& b, const Law& law
   // Over-relaxed normal impulse (SOR); the fixed point is Gauss–Seidel's.
   LocalAnswer a;
   double p_n_exact;
+  const double rate = gap_rate(c.gap, inv_dt, max_push_out);
   if (c.lubrication > 0.0) {
-    const NormalAnswer n =
-        solve_normal_with_film(u_n_free, c.gap, c.w_n, c.lubrication, dt, inv_dt);
+    const NormalAnswer n = solve_normal_with_film(u_n_free, rate, c.w_n, c.lubrication);
     p_n_exact = n.p_n;
     a.p_lub = n.p_lub;
   } else {
-    p_n_exact = std::max(0.0, -(u_n_free + c.gap * inv_dt) / c.w_n);
+    p_n_exact = std::max(0.0, -(u_n_free + rate) / c.w_n);
   }
   a.p_n = std::max(0.0, c.p_n + relaxation * (p_n_exact - c.p_n));
   const double free_slip = u_t_free.norm();

@@ -122,7 +122,7 @@ StepReport TimeStepper::step(World& world, Boundary* boundary) {
                                 settings_);
   report.contact_residual = contact_residual(contacts_, slabs_, b, law_,
                                              boundary != nullptr ? boundary->contact_law() : law_,
-                                             dt_, settings_.threads);
+                                             dt_, settings_.threads, settings_.max_push_out);
   implicit_drag_.restore_masses(b);
   if (!drag_.empty()) report.drag_work = implicit_drag_.work(drag_, dt_, b);
 

@@ -58,6 +58,8 @@ class TimeStepper {
   // it must outlive the stepper's use of it.
   void set_fluid_forces(const FluidForces* fluid) { fluid_ = fluid; }
   void set_dt(double dt) { dt_ = dt; }
+  // The solver's cap on the push-out speed of overlaps (SolverSettings).
+  void set_max_push_out(double speed) { settings_.max_push_out = speed; }
   double dt() const { return dt_; }
   const SolverSettings& settings() const { return settings_; }
   const FrictionLaw& law() const { return law_; }
