@@ -1,0 +1,129 @@
+// Fault injection (issue 19, item 1): a sweep killed with SIGKILL at random
+// moments, at least 20 times, and resumed each time, ends with the same
+// flowcurves.csv as a sweep that was never interrupted. SIGKILL gives the
+// program no chance to react: what survives is what the atomic writes
+// (io/atomic_file.hpp) and the checkpoints left on disk.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <random>
+#include <sstream>
+#include <thread>
+
+#include "analysis/delimited_text.hpp"
+#include "app/cli_runner.hpp"
+#include "sweep/tiny_sweep.hpp"
+
+namespace dilatant {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+// `dilatant sweep FILE --out OUT` as a child process, stdout/stderr to /dev/null.
+pid_t start_sweep(const fs::path& file, const fs::path& out) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int null = open("/dev/null", O_RDWR);
+    dup2(null, 0);
+    dup2(null, 1);
+    dup2(null, 2);
+    execl(DILATANT_EXECUTABLE, DILATANT_EXECUTABLE, "sweep", file.c_str(), "--out", out.c_str(),
+          "--jobs", "2", "--no-plots", "-q", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  return pid;
+}
+
+// Waits for the child; its exit code, or -signal when a signal ended it.
+int wait_for(pid_t pid) {
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
+}
+
+// The table with the wall-time column blanked (the only one that differs
+// between two runs of the same points).
+std::string table_without_timing(const fs::path& file) {
+  std::istringstream in(test::read_text(file));
+  std::string out, line;
+  std::size_t timing = std::string::npos;
+  while (std::getline(in, line)) {
+    auto fields = analysis::split_fields(line, ',');
+    if (timing == std::string::npos)
+      for (std::size_t k = 0; k < fields.size(); ++k)
+        if (fields[k] == "wall_time_s") timing = k;
+    if (!out.empty() && timing < fields.size()) fields[timing] = "";
+    for (const auto& f : fields) out += f + "|";
+    out += "\n";
+  }
+  return out;
+}
+
+TEST(SweepKill, TwentySigkillsAndResumesGiveTheUninterruptedTable) {
+  test::TempDir dir;
+  // The tiny grid, sheared longer and checkpointed often, so that kills land
+  // in every phase: packing, running between checkpoints, writing files.
+  std::string text = test::kTinyGrid;
+  const auto run_at = text.find("[run]"), friction_at = text.find("[friction]");
+  text = text.substr(0, run_at) +
+         "[run]\nstrain = 2.0\ntransient_strain = 0.1\ncheckpoint_interval = 0.05\n"
+         "snapshot_interval = 0.0\n\n" +
+         text.substr(friction_at);
+  const fs::path file = dir.path() / "kill.toml";
+  std::ofstream(file) << text;
+
+  const auto begin = Clock::now();
+  ASSERT_EQ(wait_for(start_sweep(file, dir.path() / "straight")), 0);
+  const double straight = std::chrono::duration<double>(Clock::now() - begin).count();
+
+  // Kill after a random 3-9% of the uninterrupted duration. Should the
+  // sweep finish before its 20th kill, it starts over from an empty folder
+  // with the delays halved: the 20 kills all land in one sweep.
+  std::mt19937 random(19);
+  double scale = 1.0;
+  int kills = 0, attempts = 0;
+  int kills_between_points = 0;  // with some points done and some not
+  while (kills < 20 && attempts < 400) {
+    ++attempts;
+    std::uniform_real_distribution<double> fraction(0.03 * scale, 0.09 * scale);
+    const pid_t pid = start_sweep(file, dir.path() / "killed");
+    std::this_thread::sleep_for(std::chrono::duration<double>(fraction(random) * straight));
+    kill(pid, SIGKILL);
+    const int code = wait_for(pid);
+    if (code == -SIGKILL) {
+      ++kills;
+      const fs::path table = dir.path() / "killed" / "flowcurves.csv";
+      if (fs::exists(table)) {
+        const std::string t = test::read_text(table);
+        std::size_t done = 0;
+        for (auto at = t.find(",done,"); at != std::string::npos; at = t.find(",done,", at + 1))
+          ++done;
+        if (done > 0 && done < 4) ++kills_between_points;
+      }
+      continue;
+    }
+    ASSERT_EQ(code, 0) << "a resumed sweep failed";
+    fs::remove_all(dir.path() / "killed");
+    kills = 0;
+    kills_between_points = 0;
+    scale /= 2.0;
+  }
+  ASSERT_EQ(kills, 20);
+  // The kills spread over the sweep, not all before its first point ended.
+  EXPECT_GE(kills_between_points, 2);
+  std::cout << "kills " << kills << " (" << kills_between_points << " between points), attempts "
+            << attempts << ", uninterrupted " << straight << " s\n";
+  ASSERT_EQ(wait_for(start_sweep(file, dir.path() / "killed")), 0);
+  EXPECT_EQ(table_without_timing(dir.path() / "killed" / "flowcurves.csv"),
+            table_without_timing(dir.path() / "straight" / "flowcurves.csv"));
+}
+
+}  // namespace
+}  // namespace dilatant
