@@ -27,8 +27,20 @@ CLI::App* add_predict_command(CLI::App& app, PredictCommandArgs& args) {
       "scale of thickening, gamma_dot_c ~ C eta_f I_c^2/(s_c rho_p R^2), with I_c and C "
       "measured on our flow curves. With --grid: the phase diagram over (mu0, phi).");
   args.s_c = friction_defaults::kSc;
-  auto* mu0 = p->add_option("--mu0", args.mu0, "boundary-lubricated friction coefficient (>= 0)");
-  auto* phi = p->add_option("--phi", args.phi, "solid volume fraction, in (0, 0.74)");
+  auto* mu0 = p->add_option_function<double>(
+      "--mu0",
+      [&args](double v) {
+        args.mu0 = v;
+        args.mu0_given = true;
+      },
+      "boundary-lubricated friction coefficient (>= 0)");
+  auto* phi = p->add_option_function<double>(
+      "--phi",
+      [&args](double v) {
+        args.phi = v;
+        args.phi_given = true;
+      },
+      "solid volume fraction, in (0, 0.74)");
   p->add_option("--s-c", args.s_c,
                 "critical Sommerfeld number of the Stribeck law, for the onset scale (> 0)")
       ->capture_default_str();
@@ -96,7 +108,7 @@ int execute_predict_command(const PredictCommandArgs& args) {
   if (!(args.s_c > 0.0) || !std::isfinite(args.s_c))
     throw InputError(fmt::format("--s-c {}: must be a finite number > 0", args.s_c));
   if (args.grid) return draw_grid(args);
-  if (std::isnan(args.mu0) || std::isnan(args.phi))
+  if (!args.mu0_given || !args.phi_given)
     throw InputError("predict needs --mu0 and --phi (or --grid for the whole diagram)");
   if (!(args.mu0 >= 0.0) || !std::isfinite(args.mu0))
     throw InputError(fmt::format("--mu0 {}: must be a finite number >= 0", args.mu0));

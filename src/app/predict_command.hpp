@@ -7,15 +7,16 @@
 // `dilatant predict --grid [--out DIR]`: the same over a grid of (mu0, phi),
 // written to DIR/phase_diagram.csv and drawn (scripts/phase_diagram.py).
 #include <CLI/CLI.hpp>
-#include <limits>
 #include <string>
 
 namespace dilatant {
 
 struct PredictCommandArgs {
-  // NaN: not given (required unless --grid).
-  double mu0 = std::numeric_limits<double>::quiet_NaN();
-  double phi = std::numeric_limits<double>::quiet_NaN();
+  // Required unless --grid.
+  double mu0 = 0.0;
+  double phi = 0.0;
+  bool mu0_given = false;
+  bool phi_given = false;
   double s_c = 0.0;  // set from friction_defaults::kSc by add_predict_command
   bool json = false;
   std::string table;  // empty: the built-in table

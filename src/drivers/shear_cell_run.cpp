@@ -1,12 +1,16 @@
 #include "drivers/shear_cell_run.hpp"
 
+#include <fmt/format.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <fstream>
 #include <iostream>
+#include <iterator>
 
 #include "drivers/shear_cell.hpp"
 #include "io/atomic_file.hpp"
+#include "io/config_compare.hpp"
 #include "io/input_error.hpp"
 
 namespace dilatant {
@@ -43,6 +47,29 @@ ShearCell continued(const Config& config, const std::filesystem::path& start_fro
   }
 }
 
+// The run in `out` resumed from its checkpoint: only under the configuration
+// it ran with (its config.toml), and a checkpoint that cannot be read is bad
+// input naming its file (exit 2), like any other file given to dilatant.
+ShearCell resumed(const Config& config, const std::filesystem::path& out) {
+  const auto written = out / "config.toml";
+  if (std::filesystem::is_regular_file(written)) {
+    std::ifstream in(written, std::ios::binary);
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (const auto difference = config_difference(text, config))
+      throw InputError(
+          fmt::format("{}: the run there has another configuration ({}): resume it with the same "
+                      "configuration and --set options, or choose another --out",
+                      written.string(), *difference));
+  }
+  try {
+    return ShearCell::resumed(config, out / "checkpoint.bin");
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw InputError(e.what());
+  }
+}
+
 }  // namespace
 
 CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) {
@@ -52,7 +79,7 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
   std::filesystem::create_directories(out);
 
   const bool resuming = options.resume && std::filesystem::exists(checkpoint);
-  ShearCell cell = resuming                      ? ShearCell::resumed(config, checkpoint)
+  ShearCell cell = resuming                      ? resumed(config, out)
                    : !options.start_from.empty() ? continued(config, options.start_from)
                                                  : ShearCell(config);
   const double build_s = seconds_since(start);

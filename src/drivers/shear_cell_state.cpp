@@ -91,7 +91,21 @@ ShearCellState load_checkpoint(const std::filesystem::path& file) {
   if (!in) throw std::runtime_error(file.string() + ": cannot read checkpoint");
   std::ostringstream content;
   content << in.rdbuf();
-  BinaryReader r(content.str());
+  try {
+    return read_checkpoint(content.str(), file);
+  } catch (const std::runtime_error& e) {
+    // The archive's own messages ("checkpoint is truncated") name no file.
+    const std::string what = e.what();
+    if (what.rfind(file.string(), 0) == 0) throw;
+    throw std::runtime_error(
+        fmt::format("{}: {} (a run killed while writing it leaves the "
+                    "previous checkpoint, so this file was damaged later)",
+                    file.string(), what));
+  }
+}
+
+ShearCellState read_checkpoint(std::string bytes, const std::filesystem::path& file) {
+  BinaryReader r(std::move(bytes));
   std::uint64_t magic = 0;
   r.value(magic);
   // "DILATNT" and a format digit: an older format is named as such.

@@ -43,5 +43,7 @@ struct ShearCellState {
 // Writes the state atomically; reads it back (throws on a corrupt file).
 void save_checkpoint(const std::filesystem::path& file, const ShearCellState& state);
 ShearCellState load_checkpoint(const std::filesystem::path& file);
+// The same from a checkpoint's bytes; `file` names it in messages.
+ShearCellState read_checkpoint(std::string bytes, const std::filesystem::path& file);
 
 }  // namespace dilatant

@@ -7,6 +7,7 @@
 #include <map>
 #include <sstream>
 
+#include "io/config_compare.hpp"
 #include "io/input_error.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_plan_detail.hpp"
@@ -108,10 +109,7 @@ void link_continuations(SweepPlan& plan) {
 }  // namespace detail
 
 const toml::node* find_key(const toml::table& resolved, std::string_view key) {
-  const auto dot = key.find('.');
-  if (dot == std::string_view::npos) return resolved.get(key);
-  const auto* section = resolved.get_as<toml::table>(key.substr(0, dot));
-  return section ? section->get(key.substr(dot + 1)) : nullptr;
+  return find_dotted_key(resolved, key);
 }
 
 std::string plain_text(const toml::node& value) {

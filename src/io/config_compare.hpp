@@ -1,0 +1,24 @@
+#pragma once
+// Whether a run folder's config.toml is the run of a given configuration: the
+// test that keeps a resume (`dilatant run --resume`, a sweep's point) from
+// continuing a state under other settings. Comment lines are ignored (they
+// name the file the configuration was read from).
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "io/config.hpp"
+
+namespace dilatant {
+
+// The value of dotted `key` ("friction.mu0") in a resolved configuration.
+const toml::node* find_dotted_key(const toml::table& resolved, std::string_view key);
+
+// nullopt when `file_text` (a config.toml as written by a run) is `config`'s
+// resolved configuration; else the first difference, "friction.mu0 = 0.1
+// there, 0.3 here" with `here` naming the configuration (or why the text
+// cannot be compared).
+std::optional<std::string> config_difference(const std::string& file_text, const Config& config,
+                                             std::string_view here = "here");
+
+}  // namespace dilatant
