@@ -3,6 +3,8 @@
 # curve gives Fig. 1b-d, the coulomb control, the denser boundary cells, the DST
 # checks) at the paper's cell size, and those of the Newtonian branch (the
 # literal model's dense window, fluid forces, eta_N(phi); a 15 x 10 x 18 cell),
+# and those of the three regimes (the DST map's ramps to the jam, the onset's
+# s_c scaling),
 # copies their tables and figures into docs/paper-reproduction/<sweep>/
 # and writes docs/paper-reproduction/tables.md, control.png (Stribeck against
 # the coulomb control) and newtonian.png for docs/paper-reproduction.md.
@@ -12,7 +14,7 @@
 # Environment: DILATANT_PAPER_OUT (default out/paper), DILATANT_PAPER_DOCS
 # (default docs/paper-reproduction), DILATANT_PAPER_SWEEPS (default
 # "fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi
-# dense-window-phi"),
+# dense-window-phi dst-map sc-scaling"),
 # DILATANT_SKIP_BUILD=1 to use build/ as it is.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -23,7 +25,8 @@ if [[ -z ${DILATANT_SKIP_BUILD:-} ]]; then
   bash scripts/build.sh release dilatant
 fi
 status=0
-sweeps="fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi dense-window-phi"
+sweeps="fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi dense-window-phi
+dst-map sc-scaling"
 for sweep in ${DILATANT_PAPER_SWEEPS:-$sweeps}; do
   # A failed point does not stop the others (exit 1): copy what there is, go on.
   ./build/dilatant sweep "examples/paper/$sweep.toml" --out "$out/$sweep" "$@" || status=$?
@@ -42,6 +45,10 @@ if [[ -f $docs/fig2/flowcurves.csv && -f $docs/coulomb/flowcurves.csv ]]; then
 fi
 if [[ -f $docs/newtonian-fluid/flowcurves.csv ]]; then
   /usr/bin/python3 scripts/newtonian_figures.py "$docs"
+fi
+if [[ -f $docs/dst-map/flowcurves.csv ]]; then
+  # The map reads the tables of docs/jamming/ (scripts/docs-jamming.sh).
+  /usr/bin/python3 scripts/dst_map.py "$docs/dst-map" "$docs/dst-map"
 fi
 /usr/bin/python3 scripts/paper_tables.py "$docs" >"$docs/tables.md.part"
 mv "$docs/tables.md.part" "$docs/tables.md"
