@@ -3,15 +3,16 @@ a `dilatant sweep` with continuation placed at its (mu0, phi_bulk) and marked
 by what it did, over the jamming fractions of docs/jamming.md (the paper's
 Fig. 4 with simulations on it).
 
-  dst_map.py SWEEP DOCS [NAME]
-    reads  SWEEP/flowcurves.csv           the ramps (examples/paper/dst-map.toml)
+  dst_map.py DOCS NAME SWEEP [SWEEP ...]
+    reads  SWEEP/flowcurves.csv           the ramps (examples/paper/dst-map.toml,
+                                          dst-map-mu0.toml)
            data/jamming/phi_max_bl.csv    the sediment phi_max_BL(mu0)
            docs/jamming/shear_jamming.csv the shear-jamming brackets (optional)
     writes DOCS/NAME.csv  one row per ramp: mu0, nominal phi, phi_bulk (mean
                           over its flowing points, else its jammed ones),
                           outcome, the first jammed lambda, the cold start's
                           verdict, the largest lambda that flowed, eta there
-           DOCS/NAME.png/.svg  the map (NAME defaults to dst_map)
+           DOCS/NAME.png/.svg  the map
 
 Outcomes: `dst` the ramp flows at low stress and jams above (the jam's cold
 start said `jammed`), `dst?` the same but the cold start flowed or is missing,
@@ -107,11 +108,13 @@ def draw(entries, docs, name):
 
 
 def main(argv):
-    if len(argv) not in (3, 4):
+    if len(argv) < 4:
         sys.exit(__doc__)
-    sweep, docs = Path(argv[1]), Path(argv[2])
-    name = argv[3] if len(argv) == 4 else "dst_map"
-    entries = ramps(read_rows(sweep / "flowcurves.csv"))
+    docs, name = Path(argv[1]), argv[2]
+    rows = []
+    for sweep in argv[3:]:
+        rows += read_rows(Path(sweep) / "flowcurves.csv")
+    entries = ramps(rows)
     docs.mkdir(parents=True, exist_ok=True)
     write_table(entries, docs / f"{name}.csv")
     draw(entries, docs, name)
