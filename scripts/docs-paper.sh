@@ -14,7 +14,7 @@
 # Environment: DILATANT_PAPER_OUT (default out/paper), DILATANT_PAPER_DOCS
 # (default docs/paper-reproduction), DILATANT_PAPER_SWEEPS (default
 # "fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi
-# dense-window-phi dst-map dst-map-mu0 sc-scaling"),
+# dense-window-phi dst-map dst-map-mu0 dst-map-phi sc-scaling"),
 # DILATANT_SKIP_BUILD=1 to use build/ as it is.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -26,7 +26,7 @@ if [[ -z ${DILATANT_SKIP_BUILD:-} ]]; then
 fi
 status=0
 sweeps="fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi dense-window-phi
-dst-map dst-map-mu0 sc-scaling"
+dst-map dst-map-mu0 dst-map-phi sc-scaling"
 for sweep in ${DILATANT_PAPER_SWEEPS:-$sweeps}; do
   # A failed point does not stop the others (exit 1): copy what there is, go on.
   ./build/dilatant sweep "examples/paper/$sweep.toml" --out "$out/$sweep" "$@" || status=$?
@@ -49,7 +49,9 @@ fi
 if [[ -f $docs/dst-map/flowcurves.csv ]]; then
   # The map reads the tables of docs/jamming/ (scripts/docs-jamming.sh).
   maps=("$docs/dst-map")
-  if [[ -f $docs/dst-map-mu0/flowcurves.csv ]]; then maps+=("$docs/dst-map-mu0"); fi
+  for more in dst-map-mu0 dst-map-phi; do
+    if [[ -f $docs/$more/flowcurves.csv ]]; then maps+=("$docs/$more"); fi
+  done
   /usr/bin/python3 scripts/dst_map.py "$docs/dst-map" dst_map "${maps[@]}"
 fi
 /usr/bin/python3 scripts/paper_tables.py "$docs" >"$docs/tables.md.part"
