@@ -81,7 +81,7 @@ def draw(entries, docs, name):
     mu = [float(r["mu0"]) for r in table]
     phi = [float(r["phi_max"]) for r in table]
     err = [float(r["phi_max_err"] or 0) for r in table]
-    fig, ax = plt.subplots(figsize=(5.5, 4))
+    fig, ax = plt.subplots(figsize=(7.5, 4))
     ax.fill_between(mu, phi, [0.50] * len(mu), color="tab:blue", alpha=0.10)
     ax.fill_between(mu, phi, [phi[0]] * len(mu), color="tab:red", alpha=0.10)
     ax.errorbar(mu, phi, yerr=err, color="k", marker=".", capsize=2, lw=1,
@@ -103,7 +103,8 @@ def draw(entries, docs, name):
     ax.set_ylabel(r"$\phi_{bulk}$")
     ax.set_ylim(0.54, 0.645)
     ax.set_title("stress ramps to the jam over phi_max_BL(mu0)", fontsize=9)
-    ax.legend(fontsize=7, loc="lower left")
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    fig.tight_layout()
     save(fig, docs, name)
 
 
