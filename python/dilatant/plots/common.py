@@ -1,9 +1,13 @@
-"""What analysis_plots.py and sweep_plots.py share, so that their figures are
-labelled, drawn and written the same way. Imported by them, not run.
+"""What the figures of dilatant.plots share (analysis, sweep, phase_diagram),
+so that they are labelled, drawn and written the same way. Imported, not run.
 
-Importing it sets matplotlib up, or exits with status 3 and one line on stderr
-when matplotlib or numpy is missing: the C++ commands that run the scripts
-report that line and skip the plots.
+Two ways in: as dilatant.plots.common (from Python: a missing matplotlib or
+numpy raises ImportError, and the caller's backend is kept), or as the module
+`common` beside a plot script that the CLI runs as `python3 FILE DIR` (then
+it selects the Agg backend, and exits with status 3 and one line on stderr
+when matplotlib or numpy is missing: the C++ commands report that line and
+skip the plots). The docs scripts of scripts/ import it through
+scripts/plot_common.py.
 """
 import csv
 import os
@@ -15,14 +19,20 @@ def exit_missing(error):
     sys.exit(3)
 
 
+# Imported by a script run from the command line, not from the package.
+AS_SCRIPT = not __package__
+
 try:
     import matplotlib
 
-    matplotlib.use("Agg")
+    if AS_SCRIPT:
+        matplotlib.use("Agg")
     matplotlib.rcParams["svg.hashsalt"] = "dilatant"
     import matplotlib.pyplot as plt
     import numpy  # noqa: F401  (missing numpy must exit 3 too, not fail later)
 except ImportError as e:  # the caller reports this line
+    if not AS_SCRIPT:
+        raise
     exit_missing(e)
 
 # Axis labels in the simulation's units (eta_f, rho_p and R as units).
