@@ -8,10 +8,12 @@ import io
 import math
 from pathlib import Path
 
-import numpy as np
-
 
 def _column(values):
+    import numpy as np  # here, not at import: `import dilatant` works without numpy
+
+    if all(v == "" for v in values):
+        return np.array(values, dtype=str)
     try:
         return np.array([int(v) for v in values], dtype=np.int64)
     except ValueError:
@@ -28,6 +30,8 @@ def read_table(source):
         text = source
     else:
         text = Path(source).read_text()
+    import numpy as np
+
     rows = list(csv.reader(io.StringIO(text)))
     if not rows:
         return np.zeros(0)

@@ -15,8 +15,15 @@ import sys
 
 
 def exit_missing(error):
+    """A script exits 3 with one line (the CLI reports it); Python gets the ImportError."""
+    if __package__:
+        raise error
     print(f"matplotlib/numpy not available ({error})", file=sys.stderr)
     sys.exit(3)
+
+
+class NothingToPlot(ValueError):
+    """No finished result to draw (a script exits 4)."""
 
 
 # Imported by a script run from the command line, not from the package.
@@ -31,8 +38,6 @@ try:
     import matplotlib.pyplot as plt
     import numpy  # noqa: F401  (missing numpy must exit 3 too, not fail later)
 except ImportError as e:  # the caller reports this line
-    if not AS_SCRIPT:
-        raise
     exit_missing(e)
 
 # Axis labels in the simulation's units (eta_f, rho_p and R as units).

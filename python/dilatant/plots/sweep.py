@@ -33,18 +33,15 @@ import sys
 from pathlib import Path
 
 if __package__:
-    from .common import RATE, VISCOSITY, exit_missing, read_rows, save
-else:  # run as a script (the CLI: python3 sweep.py DIR); common.py lies beside it,
-    # whose folder is not on the path under python3 -P or PYTHONSAFEPATH.
-    # Importing it exits 3 without matplotlib.
+    from .common import RATE, VISCOSITY, NothingToPlot, exit_missing, read_rows, save
+else:  # a script (the CLI: python3 sweep.py DIR): common.py lies beside it, a folder
+    # not on the path under python3 -P or PYTHONSAFEPATH. Without matplotlib it exits 3.
     sys.path.insert(0, str(Path(__file__).resolve().parent))
-    from common import RATE, VISCOSITY, exit_missing, read_rows, save  # noqa: E402
+    from common import RATE, VISCOSITY, NothingToPlot, exit_missing, read_rows, save  # noqa
 
 try:
     import tomllib
 except ImportError as e:  # Python < 3.11
-    if __package__:
-        raise
     exit_missing(e)
 
 import matplotlib  # noqa: E402
@@ -369,10 +366,6 @@ def fig1d(out, rows, curve, colours, swept):
     caption(fig, settings_caption(out, rows, swept) + "\ncolours: the stresses of Fig. 1b; "
             + VALIDITY_NOTE)
     save(fig, out / "plots", "fig1d_contacts")
-
-
-class NothingToPlot(ValueError):
-    """No finished point in the sweep (the script exits 4)."""
 
 
 def draw(out):
