@@ -26,8 +26,10 @@ analysis::JammingTable table_of(const std::optional<std::filesystem::path>& file
 // s_c None: the Stribeck law's default (friction/defaults.hpp), as the CLI's.
 py::object predict(double mu0, double phi, std::optional<double> s_c,
                    const std::optional<std::filesystem::path>& table) {
-  const auto report = analysis::predict(
-      table_of(table), mu0, phi, s_c.value_or(friction_defaults::kSc), {"mu0", "phi", "s_c"});
+  const double s = s_c.value_or(friction_defaults::kSc);
+  const analysis::PredictArgumentNames names{"mu0", "phi", "s_c"};
+  analysis::check_prediction_input(mu0, phi, s, names);  // before the table is read
+  const auto report = analysis::predict(table_of(table), mu0, phi, s, names);
   const std::string text =
       analysis::prediction_json(report, table ? table->string() : "built-in").dump();
   return py::module_::import("json").attr("loads")(text);

@@ -30,14 +30,18 @@ nlohmann::json onset_json(const OnsetPrediction& o, double s_c) {
 
 }  // namespace
 
-PredictionReport predict(const JammingTable& table, double mu0, double phi, double s_c,
-                         const PredictArgumentNames& names) {
+void check_prediction_input(double mu0, double phi, double s_c, const PredictArgumentNames& names) {
   if (!(s_c > 0.0) || !std::isfinite(s_c))
     throw InputError(fmt::format("{} {}: must be a finite number > 0", names.s_c, s_c));
   if (!(mu0 >= 0.0) || !std::isfinite(mu0))
     throw InputError(fmt::format("{} {}: must be a finite number >= 0", names.mu0, mu0));
   if (!(phi > 0.0 && phi < 0.74))
     throw InputError(fmt::format("{} {}: must be in (0, 0.74)", names.phi, phi));
+}
+
+PredictionReport predict(const JammingTable& table, double mu0, double phi, double s_c,
+                         const PredictArgumentNames& names) {
+  check_prediction_input(mu0, phi, s_c, names);
   PredictionReport r;
   r.mu0 = mu0;
   r.phi = phi;

@@ -21,11 +21,15 @@ struct PredictionReport {
   bool mu0_beyond_table() const { return mu0 > mu0_table_max; }
 };
 
-// Validates (InputError naming `--mu0`, `--phi`, `--s-c` as `names` spells
-// them) and predicts.
+// How the caller spells the inputs in messages: the CLI's flags, or Python's
+// argument names.
 struct PredictArgumentNames {
   std::string mu0 = "--mu0", phi = "--phi", s_c = "--s-c";
 };
+// InputError naming the first bad input (s_c, mu0, phi), before any table is read.
+void check_prediction_input(double mu0, double phi, double s_c,
+                            const PredictArgumentNames& names = {});
+// Checks the input and predicts.
 PredictionReport predict(const JammingTable& table, double mu0, double phi, double s_c,
                          const PredictArgumentNames& names = {});
 

@@ -92,6 +92,7 @@ int execute_predict_command(const PredictCommandArgs& args) {
   if (args.grid) return draw_grid(args);
   if (!args.mu0_given || !args.phi_given)
     throw InputError("predict needs --mu0 and --phi (or --grid for the whole diagram)");
+  analysis::check_prediction_input(args.mu0, args.phi, args.s_c);  // before the table is read
   const auto report = analysis::predict(load_table(args.table), args.mu0, args.phi, args.s_c);
   if (args.json) {
     std::cout
