@@ -93,3 +93,28 @@ def test_ctrl_c_stops_advance(tmp_path):
 def test_unconverged_steps_are_reported_as_a_warning():
     with pytest.warns(RuntimeWarning, match=r"steps did not converge within solver"):
         dilatant.run(TINY, overrides={"solver.max_iterations": 2})
+
+
+SWEEP_CHILD = """
+import sys, dilatant
+sweep = {"cell": {"size": [6.0, 5.0, 7.0]}, "fluid": {"lambda": [10.0, 100.0]},
+         "run": {"strain": 1000.0}, "sweep": {"jobs": 2}}
+print("starting", flush=True)
+try:
+    dilatant.sweep(sweep, sys.argv[1], plots=False)
+except KeyboardInterrupt:
+    sys.exit(5)
+"""
+
+
+def test_ctrl_c_stops_a_sweep_with_its_points_checkpointed(tmp_path):
+    child = subprocess.Popen([sys.executable, "-c", SWEEP_CHILD, str(tmp_path)],
+                             stdout=subprocess.PIPE, text=True)
+    assert child.stdout.readline().strip() == "starting"
+    time.sleep(1.0)
+    child.send_signal(signal.SIGINT)
+    child.communicate(timeout=30)
+    assert child.returncode == 5
+    table = dilatant.read_table(tmp_path / "flowcurves.csv")
+    assert set(table["status"]) == {"pending"}
+    assert len(list(tmp_path.glob("points/*/checkpoint.bin"))) == 2
