@@ -1,20 +1,22 @@
 #!/usr/bin/env bash
 # Configures and builds dilatant with Ninja on all cores.
 #   scripts/build.sh [release|sanitize] [target...]   (default: release, all targets)
-#     release  -> build/           Release; CLI, tests and benchmarks
-#     sanitize -> build-sanitize/  RelWithDebInfo with ASan + UBSan; no benchmarks
+#     release  -> build/           Release; CLI, tests, benchmarks, Python module (build/python)
+#     sanitize -> build-sanitize/  RelWithDebInfo with ASan + UBSan; no benchmarks, no
+#                                  Python module (an ASan extension loads only with LD_PRELOAD)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 case "${1:-release}" in
   release)
     dir=build
-    options=(-DCMAKE_BUILD_TYPE=Release -DDILATANT_SANITIZE=OFF -DDILATANT_BUILD_BENCHMARKS=ON)
+    options=(-DCMAKE_BUILD_TYPE=Release -DDILATANT_SANITIZE=OFF -DDILATANT_BUILD_BENCHMARKS=ON
+      -DDILATANT_BUILD_PYTHON=ON)
     ;;
   sanitize)
     dir=build-sanitize
     options=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DDILATANT_SANITIZE=ON
-      -DDILATANT_BUILD_BENCHMARKS=OFF)
+      -DDILATANT_BUILD_BENCHMARKS=OFF -DDILATANT_BUILD_PYTHON=OFF)
     ;;
   *)
     echo "usage: $0 [release|sanitize] [target...]" >&2

@@ -42,7 +42,7 @@ if stage "sanitize build" bash scripts/build.sh sanitize; then
 fi
 
 format_check() {
-  find src tests bench -type f \( -name '*.cpp' -o -name '*.hpp' -o -name '*.h' \) -print0 |
+  find src tests bench python/src -type f \( -name '*.cpp' -o -name '*.hpp' -o -name '*.h' \) -print0 |
     xargs -0 --no-run-if-empty clang-format --dry-run --Werror
 }
 stage "clang-format" format_check || true

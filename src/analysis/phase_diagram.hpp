@@ -1,7 +1,7 @@
 #pragma once
 // The paper's phase diagram (Fernandez et al. 2013, Fig. 4) drawn from our
 // jamming table: the regime predict_regime assigns at every node of a grid
-// of (mu0, phi), as the CSV that scripts/phase_diagram.py draws.
+// of (mu0, phi), as the CSV that python/dilatant/plots/phase_diagram.py draws.
 #include <string>
 
 #include "analysis/jamming_table.hpp"

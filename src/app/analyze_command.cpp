@@ -33,8 +33,9 @@ CLI::App* add_analyze_command(CLI::App& app, AnalyzeCommandArgs& args) {
   cmd->add_flag("-q,--quiet", args.quiet, "No summary on stdout");
   cmd->add_option("--python", args.python, "Python with matplotlib that draws the plots")
       ->capture_default_str();
-  cmd->add_option("--plot-script", args.plot_script,
-                  "The plotting script (default: scripts/analysis_plots.py of this source tree)");
+  cmd->add_option(
+      "--plot-script", args.plot_script,
+      "The plotting script (default: python/dilatant/plots/analysis.py of this source tree)");
   auto& s = args.settings;
   cmd->add_option("--onset-factor", s.onset_factor,
                   "Thickening starts where eta exceeds this x the Newtonian viscosity (> 1)")

@@ -2,7 +2,7 @@
 // `dilatant analyze INPUT [--out DIR] [--no-plots] [options]`: the rheometer
 // analysis (docs/analysis.md) of a manifest of rheometer files or of a sweep's
 // flowcurves.csv. The numbers come from the library (src/analysis); the plots
-// are drawn from the written files by scripts/analysis_plots.py.
+// are drawn from the written files by python/dilatant/plots/analysis.py.
 #include <CLI/CLI.hpp>
 #include <string>
 

@@ -25,8 +25,9 @@ CLI::App* add_plot_command(CLI::App& app, PlotCommandArgs& args) {
       ->check(CLI::ExistingDirectory);
   cmd->add_option("--python", args.python, "Python with matplotlib that draws the plots")
       ->capture_default_str();
-  cmd->add_option("--plot-script", args.plot_script,
-                  "The plotting script (default: scripts/sweep_plots.py of this source tree)");
+  cmd->add_option(
+      "--plot-script", args.plot_script,
+      "The plotting script (default: python/dilatant/plots/sweep.py of this source tree)");
   cmd->add_flag("-q,--quiet", args.quiet, "No message on stdout");
   return cmd;
 }

@@ -1,7 +1,7 @@
 #pragma once
 // `dilatant plot DIR`: the figures of a sweep (paper Figs. 1b-d and 2) from
 // its folder, redrawn: the flow-curve analysis again (DIR/analysis/), then
-// scripts/sweep_plots.py into DIR/plots/ (PNG and SVG; docs/sweeps.md "Plots").
+// python/dilatant/plots/sweep.py into DIR/plots/ (PNG and SVG; docs/sweeps.md "Plots").
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <string>

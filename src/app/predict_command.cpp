@@ -5,13 +5,12 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
-#include <nlohmann/json.hpp>
 
 #include "analysis/jamming_table.hpp"
 #include "analysis/onset_table.hpp"
 #include "analysis/phase_diagram.hpp"
+#include "analysis/prediction_report.hpp"
 #include "app/python_script.hpp"
-#include "dilatant/version.hpp"
 #include "friction/defaults.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
@@ -85,23 +84,6 @@ int draw_grid(const PredictCommandArgs& args) {
   return 0;
 }
 
-nlohmann::json onset_json(const analysis::OnsetPrediction& o, double s_c) {
-  if (!o.available) return nullptr;
-  return {{"rate", o.rate},
-          {"rate_unit", "eta_f/(rho_p R^2)"},
-          {"scale_I2_over_s_c", o.scale},
-          {"prefactor", o.prefactor},
-          {"inertial_number", o.measured.inertial_number},
-          {"s_c", s_c},
-          {"measured_at",
-           {{"mu0", o.measured.mu0},
-            {"phi_bulk", o.measured.phi_bulk},
-            {"s_c", o.measured.s_c},
-            {"onset_rate", o.measured.onset_rate},
-            {"model", o.measured.model},
-            {"source", o.measured.source}}}};
-}
-
 }  // namespace
 
 int execute_predict_command(const PredictCommandArgs& args) {
@@ -110,37 +92,16 @@ int execute_predict_command(const PredictCommandArgs& args) {
   if (args.grid) return draw_grid(args);
   if (!args.mu0_given || !args.phi_given)
     throw InputError("predict needs --mu0 and --phi (or --grid for the whole diagram)");
-  if (!(args.mu0 >= 0.0) || !std::isfinite(args.mu0))
-    throw InputError(fmt::format("--mu0 {}: must be a finite number >= 0", args.mu0));
-  if (!(args.phi > 0.0 && args.phi < 0.74))
-    throw InputError(fmt::format("--phi {}: must be in (0, 0.74)", args.phi));
-  const auto table = load_table(args.table);
-  const auto p = analysis::predict_regime(table, args.mu0, args.phi);
-  // No flow, no onset: the scale is given for the flowing regimes only.
-  const auto onset =
-      p.regime == analysis::FlowRegime::NoFlow
-          ? analysis::OnsetPrediction{}
-          : analysis::predict_onset(analysis::OnsetTable::builtin(), args.mu0, args.phi, args.s_c);
-  const double mu_max = table.points().back().mu0;
+  analysis::check_prediction_input(args.mu0, args.phi, args.s_c);  // before the table is read
+  const auto report = analysis::predict(load_table(args.table), args.mu0, args.phi, args.s_c);
   if (args.json) {
-    nlohmann::json j;
-    j["mu0"] = args.mu0;
-    j["phi"] = args.phi;
-    j["regime"] = analysis::flow_regime_name(p.regime);
-    j["phi_max_bl"] = p.phi_max_bl.value;
-    j["phi_max_bl_err"] = p.phi_max_bl.error;
-    j["phi_rcp"] = p.phi_rcp.value;
-    j["phi_rcp_err"] = p.phi_rcp.error;
-    j["margin_sigma"] =
-        std::isfinite(p.margin_sigma) ? nlohmann::json(p.margin_sigma) : nlohmann::json(nullptr);
-    j["uncertain"] = p.uncertain;
-    j["mu0_beyond_table"] = args.mu0 > mu_max;
-    j["onset"] = onset_json(onset, args.s_c);
-    j["table"] = args.table.empty() ? "built-in" : args.table;
-    j["version"] = kVersion;
-    std::cout << j.dump(2) << "\n";
+    std::cout
+        << analysis::prediction_json(report, args.table.empty() ? "built-in" : args.table).dump(2)
+        << "\n";
     return 0;
   }
+  const auto& p = report.regime;
+  const auto& onset = report.onset;
   std::cout << fmt::format(
       "{} (phi {} against phi_max_BL({}) = {:.4f} +- {:.4f} and phi_RCP = {:.4f} +- {:.4f}{})\n",
       analysis::flow_regime_name(p.regime), args.phi, args.mu0, p.phi_max_bl.value,
@@ -154,11 +115,11 @@ int execute_predict_command(const PredictCommandArgs& args) {
         "I_c^2/s_c alone is {:.3g}; docs/jamming.md)\n",
         onset.rate, args.s_c, onset.measured.inertial_number, onset.prefactor, onset.measured.mu0,
         onset.measured.phi_bulk, onset.measured.s_c, onset.measured.model, onset.scale);
-  if (args.mu0 > mu_max)
+  if (report.mu0_beyond_table())
     std::cout << fmt::format(
         "note: mu0 {} is beyond the table's last point ({}); its value is "
         "used\n",
-        args.mu0, mu_max);
+        args.mu0, report.mu0_table_max);
   return 0;
 }
 

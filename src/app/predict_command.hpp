@@ -5,7 +5,7 @@
 // phi_max_BL(mu0), and the onset scale of thickening from our flow curves
 // (analysis/onset_table.hpp).
 // `dilatant predict --grid [--out DIR]`: the same over a grid of (mu0, phi),
-// written to DIR/phase_diagram.csv and drawn (scripts/phase_diagram.py).
+// written to DIR/phase_diagram.csv and drawn (python/dilatant/plots/phase_diagram.py).
 #include <CLI/CLI.hpp>
 #include <string>
 

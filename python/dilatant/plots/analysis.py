@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Plots of `dilatant analyze`, drawn from its output folder (no fitting here).
 
-Usage: analysis_plots.py DIR
+Usage: python3 python/dilatant/plots/analysis.py DIR
+   or: dilatant.plots.analysis.draw(DIR)
 Reads DIR/curves.csv, DIR/points.csv and DIR/fits.json; writes, as PNG and SVG,
   DIR/flow_curves.*  viscosity vs shear rate, one panel per sample, colour = phi;
                      filled markers = the fit window, with the fitted power law;
@@ -19,10 +20,13 @@ import math
 import sys
 from pathlib import Path
 
-# plot_common lies beside this script, whose folder is not on the path under
-# python3 -P or PYTHONSAFEPATH. Importing it exits 3 without matplotlib.
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from plot_common import RATE, VISCOSITY, read_rows, save  # noqa: E402
+if __package__:
+    from .common import RATE, VISCOSITY, read_rows, save
+else:  # run as a script (the CLI: python3 analysis.py DIR); common.py lies beside it,
+    # whose folder is not on the path under python3 -P or PYTHONSAFEPATH.
+    # Importing it exits 3 without matplotlib.
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from common import RATE, VISCOSITY, read_rows, save  # noqa: E402
 
 import matplotlib  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
@@ -188,11 +192,9 @@ def collapse(out, samples, curves, fits):
     save(fig, out, "collapse")
 
 
-def main():
-    if len(sys.argv) != 2:
-        print("usage: analysis_plots.py DIR", file=sys.stderr)
-        sys.exit(2)
-    out = Path(sys.argv[1])
+def draw(out):
+    """The figures of the analysis in folder `out` (curves.csv, points.csv, fits.json)."""
+    out = Path(out)
     curves = read_rows(out / "curves.csv")
     points = read_rows(out / "points.csv")
     fits = json.loads((out / "fits.json").read_text())
@@ -200,6 +202,13 @@ def main():
     flow_curves(out, samples, curves, points, fits["units"])
     n_vs_phi(out, samples, curves, fits)
     collapse(out, samples, curves, fits)
+
+
+def main():
+    if len(sys.argv) != 2:
+        print("usage: analysis.py DIR", file=sys.stderr)
+        sys.exit(2)
+    draw(sys.argv[1])
 
 
 if __name__ == "__main__":

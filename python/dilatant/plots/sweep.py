@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Figures of a sweep (`dilatant sweep`, `dilatant plot`), drawn from its folder.
 
-Usage: sweep_plots.py DIR
+Usage: python3 python/dilatant/plots/sweep.py DIR
+   or: dilatant.plots.sweep.draw(DIR)
 
 Reads DIR/flowcurves.csv, DIR/analysis/curves.csv (the regime of each curve,
 when present) and, per point, DIR/points/*/sommerfeld_hist.csv and config.toml.
@@ -31,10 +32,12 @@ import math
 import sys
 from pathlib import Path
 
-# plot_common lies beside this script, whose folder is not on the path under
-# python3 -P or PYTHONSAFEPATH. Importing it exits 3 without matplotlib.
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from plot_common import RATE, VISCOSITY, exit_missing, read_rows, save  # noqa: E402
+if __package__:
+    from .common import RATE, VISCOSITY, NothingToPlot, exit_missing, read_rows, save
+else:  # a script (the CLI: python3 sweep.py DIR): common.py lies beside it, a folder
+    # not on the path under python3 -P or PYTHONSAFEPATH. Without matplotlib it exits 3.
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from common import RATE, VISCOSITY, NothingToPlot, exit_missing, read_rows, save  # noqa
 
 try:
     import tomllib
@@ -365,23 +368,31 @@ def fig1d(out, rows, curve, colours, swept):
     save(fig, out / "plots", "fig1d_contacts")
 
 
-def main():
-    if len(sys.argv) != 2:
-        print("usage: sweep_plots.py DIR", file=sys.stderr)
-        sys.exit(2)
-    out = Path(sys.argv[1])
+def draw(out):
+    """The figures of the sweep in folder `out` into out/plots/."""
+    out = Path(out)
     header = next(csv.reader(open(out / "flowcurves.csv", newline="")))
     swept = header[:header.index("point")]
     rows, curves = load_curves(out)
     if not curves:
-        print("no finished point to plot", file=sys.stderr)
-        sys.exit(4)
+        raise NothingToPlot("no finished point to plot")
     flow_curves_figure(out, rows, curves, swept)
     curve = chosen_curve(curves)
     colours = stress_colours(curve)
     fig1b(out, rows, curve, colours, swept)
     fig1c(out, rows, curve, colours, swept)
     fig1d(out, rows, curve, colours, swept)
+
+
+def main():
+    if len(sys.argv) != 2:
+        print("usage: sweep.py DIR", file=sys.stderr)
+        sys.exit(2)
+    try:
+        draw(sys.argv[1])
+    except NothingToPlot as e:
+        print(e, file=sys.stderr)
+        sys.exit(4)
 
 
 if __name__ == "__main__":

@@ -1,6 +1,7 @@
 """The phase diagram of `dilatant predict --grid` (docs/jamming.md):
 
-  phase_diagram.py DIR
+  python3 python/dilatant/plots/phase_diagram.py DIR
+  or dilatant.plots.phase_diagram.draw(DIR)
     reads  DIR/phase_diagram.csv   the regime at every (mu0, phi) node
     writes DIR/phase_diagram.png/.svg
 
@@ -12,7 +13,13 @@ their mu0 is not in the paper's text.
 import sys
 from pathlib import Path
 
-from plot_common import plt, read_rows, save
+if __package__:
+    from .common import plt, read_rows, save
+else:  # run as a script (the CLI: python3 phase_diagram.py DIR); common.py lies beside it,
+    # whose folder is not on the path under python3 -P or PYTHONSAFEPATH.
+    # Importing it exits 3 without matplotlib.
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from common import plt, read_rows, save  # noqa: E402
 
 import numpy as np
 
@@ -21,7 +28,8 @@ REGIMES = ["cst", "dst", "no_flow"]
 COLOURS = ["#9ecae1", "#fdae6b", "#d9d9d9"]
 
 
-def main(out):
+def draw(out):
+    out = Path(out)
     rows = read_rows(out / "phase_diagram.csv")
     mu = np.array(sorted({float(r["mu0"]) for r in rows}))
     phi = np.array(sorted({float(r["phi"]) for r in rows}))
@@ -57,4 +65,4 @@ def main(out):
 if __name__ == "__main__":
     if len(sys.argv) != 2:
         sys.exit(__doc__)
-    main(Path(sys.argv[1]))
+    draw(sys.argv[1])

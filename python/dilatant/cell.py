@@ -1,0 +1,89 @@
+"""The shear cell step by step (drivers/shear_cell.hpp), for scripts and
+notebooks that look inside a run:
+
+    cell = dilatant.ShearCell({"cell": {"size": [6.0, 5.0, 7.0]}})
+    while not cell.done:
+        cell.advance(strain=0.1)            # GIL released; Ctrl-C stops after a step
+        print(cell.strain, cell.wall_velocity, len(cell.contacts))
+    cell.finish()
+    cell.write_results("out/cell")         # the files `dilatant run` writes
+
+State (code units R = rho_p = tau = 1): positions, velocities,
+angular_velocities (N x 3), radii, ids, groups (0 particle, 1 bottom wall,
+2 top wall); tables as numpy structured arrays: contacts (contacts.csv),
+timeseries, velocity_profile, sommerfeld_hist (P(s)); summary() in the
+paper's units. Writers are explicit: nothing is written unless asked.
+"""
+from . import _core
+from .configs import load_config
+from .tables import read_table
+
+
+class ShearCell:
+    def __init__(self, config=None, overrides=None):
+        self._cell = _core.ShearCell(load_config(config, overrides))
+
+    @classmethod
+    def _wrap(cls, core_cell):
+        cell = cls.__new__(cls)
+        cell._cell = core_cell
+        return cell
+
+    @classmethod
+    def resumed(cls, config, checkpoint, overrides=None):
+        """Exactly where the run that wrote `checkpoint` (of this config) stopped."""
+        return cls._wrap(_core.ShearCell.resumed(load_config(config, overrides), checkpoint))
+
+    @classmethod
+    def continued(cls, config, checkpoint, overrides=None):
+        """The final state of another run of the same cell, under this config."""
+        return cls._wrap(_core.ShearCell.continued(load_config(config, overrides), checkpoint))
+
+    # Stepping
+    def step(self):
+        """One time step."""
+        self._cell.step()
+
+    def advance(self, strain=None, steps=None):
+        """Steps on by `strain` or `steps` (whichever first), or until done;
+        returns the steps taken."""
+        return self._cell.advance(strain=strain, steps=steps)
+
+    def finish(self):
+        """Closes the time series' last row: call once at the end of a run."""
+        self._cell.finish()
+
+    # Tables
+    @property
+    def contacts(self):
+        return read_table(self._cell.contacts_csv())
+
+    @property
+    def timeseries(self):
+        return read_table(self._cell.timeseries_csv())
+
+    @property
+    def velocity_profile(self):
+        return read_table(self._cell.velocity_profile_csv())
+
+    @property
+    def sommerfeld_hist(self):
+        return read_table(self._cell.sommerfeld_hist_csv())
+
+    def summary(self):
+        """summary.json's fields for the run so far."""
+        return self._cell.summary()
+
+    # Everything else (done, strain, positions, write_results, ...) is the
+    # compiled object's.
+    def __getattr__(self, name):
+        if name == "_cell":
+            raise AttributeError(name)
+        return getattr(self._cell, name)
+
+    def __dir__(self):
+        return sorted(set(super().__dir__()) | set(dir(self._cell)))
+
+    def __repr__(self):
+        return (f"<dilatant.ShearCell {len(self.radii)} bodies, strain {self.strain:.4g}"
+                f"{', jammed' if self.jammed else ''}>")

@@ -1,0 +1,63 @@
+// The rheometer analysis (analysis/analysis.hpp, `dilatant analyze`).
+// Settings are checked here with the names Python spells them
+// (onset_factor=..., not --onset-factor).
+#include <fmt/format.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <optional>
+
+#include "analysis/analysis.hpp"
+#include "analysis/report_files.hpp"
+#include "bindings.hpp"
+#include "io/input_error.hpp"
+
+namespace py = pybind11;
+
+namespace dilatant::python {
+
+namespace {
+
+void check(bool ok, std::string_view name, double value, std::string_view what) {
+  if (!ok) throw InputError(fmt::format("{} = {}: {}", name, value, what));
+}
+
+// Writes curves.csv, points.csv and fits.json into `out`; returns the numbers
+// of curves and samples (the files hold the rest).
+// A setting left None keeps the library's default (analysis_settings.hpp).
+py::dict analyse(const std::filesystem::path& input, const std::filesystem::path& out,
+                 std::optional<double> onset_factor, std::optional<double> dst_n_cap,
+                 std::optional<int> min_window_points, std::optional<double> confidence) {
+  analysis::AnalysisSettings s;
+  s.onset_factor = onset_factor.value_or(s.onset_factor);
+  s.dst_n_cap = dst_n_cap.value_or(s.dst_n_cap);
+  s.min_window_points = min_window_points.value_or(s.min_window_points);
+  s.confidence = confidence.value_or(s.confidence);
+  check(s.onset_factor > 1.0, "onset_factor", s.onset_factor, "must be > 1");
+  check(s.dst_n_cap > 0.0, "dst_n_cap", s.dst_n_cap, "must be > 0");
+  check(s.min_window_points >= 3, "min_window_points", s.min_window_points, "must be >= 3");
+  check(s.confidence > 0.0 && s.confidence < 1.0, "confidence", s.confidence, "must be in (0, 1)");
+  std::size_t curves = 0, samples = 0;
+  {
+    py::gil_scoped_release release;
+    const analysis::AnalysisReport report =
+        analysis::analyse(analysis::load_analysis_input(input), s);
+    analysis::write_report_files(report, out);
+    curves = report.curves.size();
+    samples = report.samples.size();
+  }
+  py::dict d;
+  d["curves"] = curves;
+  d["samples"] = samples;
+  return d;
+}
+
+}  // namespace
+
+void bind_analysis(py::module_& m) {
+  m.def("analyse", &analyse, py::arg("input"), py::arg("out"), py::arg("onset_factor"),
+        py::arg("dst_n_cap"), py::arg("min_window_points"), py::arg("confidence"));
+}
+
+}  // namespace dilatant::python

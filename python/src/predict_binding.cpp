@@ -1,0 +1,52 @@
+// The regime predictor (analysis/prediction_report.hpp, `dilatant predict`)
+// and its phase diagram (analysis/phase_diagram.hpp, `predict --grid`). Apart
+// from analysis_binding.cpp: analysis/ has two `Estimate`s, one per header.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <optional>
+
+#include "analysis/phase_diagram.hpp"
+#include "analysis/prediction_report.hpp"
+#include "bindings.hpp"
+#include "friction/defaults.hpp"
+#include "io/atomic_file.hpp"
+
+namespace py = pybind11;
+
+namespace dilatant::python {
+
+namespace {
+
+analysis::JammingTable table_of(const std::optional<std::filesystem::path>& file) {
+  return file ? analysis::JammingTable::read(*file) : analysis::JammingTable::builtin();
+}
+
+// s_c None: the Stribeck law's default (friction/defaults.hpp), as the CLI's.
+py::object predict(double mu0, double phi, std::optional<double> s_c,
+                   const std::optional<std::filesystem::path>& table) {
+  const double s = s_c.value_or(friction_defaults::kSc);
+  const analysis::PredictArgumentNames names{"mu0", "phi", "s_c"};
+  analysis::check_prediction_input(mu0, phi, s, names);  // before the table is read
+  const auto report = analysis::predict(table_of(table), mu0, phi, s, names);
+  const std::string text =
+      analysis::prediction_json(report, table ? table->string() : "built-in").dump();
+  return py::module_::import("json").attr("loads")(text);
+}
+
+void phase_diagram(const std::filesystem::path& out,
+                   const std::optional<std::filesystem::path>& table) {
+  std::filesystem::create_directories(out);
+  write_file_atomically(out / "phase_diagram.csv",
+                        analysis::phase_diagram_csv(table_of(table), {}));
+}
+
+}  // namespace
+
+void bind_predict(py::module_& m) {
+  m.def("predict", &predict, py::arg("mu0"), py::arg("phi"), py::arg("s_c"), py::arg("table"));
+  m.def("phase_diagram", &phase_diagram, py::arg("out"), py::arg("table"));
+}
+
+}  // namespace dilatant::python

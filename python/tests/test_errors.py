@@ -1,0 +1,78 @@
+"""Bad input raises dilatant.ConfigError (a ValueError) with exactly the line
+the CLI prints after "dilatant: error: "."""
+import pytest
+
+import dilatant
+from conftest import TINY, TINY_TOML, run_cli
+
+PREFIX = "dilatant: error: "
+
+
+def cli_message(cli, *args):
+    done = run_cli(cli, "run", *args, check=False)
+    assert done.returncode == 2, done.stderr
+    line = done.stderr.strip()
+    assert line.startswith(PREFIX)
+    return line[len(PREFIX):]
+
+
+@pytest.mark.parametrize("text", [
+    TINY_TOML + "[friction]\nmu0 = -0.1\n",
+    TINY_TOML.replace("size =", "sizes ="),
+    TINY_TOML + "[fluid]\neta_f = 1.0\n",
+    TINY_TOML + "[solver]\nmax_iterations = \"many\"\n",
+])
+def test_file_errors_match_the_cli(cli, tmp_path, text):
+    path = tmp_path / "bad.toml"
+    path.write_text(text)
+    expected = cli_message(cli, path, "--out", tmp_path / "out")
+    with pytest.raises(dilatant.ConfigError) as error:
+        dilatant.run(path)
+    assert str(error.value) == expected
+    with pytest.raises(dilatant.ConfigError) as error:
+        dilatant.load_config(str(path))
+    assert str(error.value) == expected
+
+
+def test_override_errors_match_the_cli(cli, tiny_file, tmp_path):
+    expected = cli_message(cli, tiny_file, "--set", "friction.mu0=-1", "--out", tmp_path / "o")
+    with pytest.raises(dilatant.ConfigError) as error:
+        dilatant.run(tiny_file, overrides=["friction.mu0=-1"])
+    assert str(error.value) == expected
+
+
+def test_config_error_is_a_value_error():
+    assert issubclass(dilatant.ConfigError, ValueError)
+    with pytest.raises(ValueError, match=r"^<dict>: friction.mu0 = -0.1: must be >= 0$"):
+        dilatant.load_config({**TINY, "friction": {"mu0": -0.1}})
+
+
+def test_unknown_key_in_a_dict_names_it():
+    with pytest.raises(dilatant.ConfigError, match=r"^<dict>: cell.sizes: unknown key"):
+        dilatant.load_config({"cell": {"sizes": [6.0, 5.0, 7.0]}})
+
+
+def test_a_value_python_cannot_say_in_toml():
+    with pytest.raises(dilatant.ConfigError, match=r"^<dict>: cell.size: cannot be a set"):
+        dilatant.load_config({"cell": {"size": {6.0}}})
+
+
+def test_missing_file():
+    with pytest.raises(dilatant.ConfigError, match="nowhere.toml"):
+        dilatant.run("nowhere.toml")
+
+
+def test_wrong_argument_type():
+    with pytest.raises(TypeError):
+        dilatant.load_config(42)
+
+
+def test_bad_analysis_and_prediction_input(tmp_path):
+    with pytest.raises(dilatant.ConfigError, match=r"^phi 0.9: must be in \(0, 0.74\)$"):
+        dilatant.predict(mu0=0.1, phi=0.9)
+    with pytest.raises(dilatant.ConfigError, match=r"^onset_factor = 0.5: must be > 1$"):
+        dilatant.analyze(tmp_path / "any.toml", onset_factor=0.5)
+    bad = tmp_path / "curve.csv"
+    bad.write_text("shear_rate,viscosity\n1,x\n")
+    with pytest.raises(dilatant.ConfigError, match="curve.csv"):
+        dilatant.analyze(bad)

@@ -1,0 +1,120 @@
+"""Progress, stopping and Ctrl-C: a run reports its fraction done, stops
+cleanly when asked (checkpoint written, resumable to the uninterrupted
+result), and a SIGINT in Python interrupts it the same way."""
+import signal
+import subprocess
+import sys
+import time
+
+import numpy as np
+import pytest
+
+import dilatant
+from conftest import TINY
+
+
+def test_progress_is_reported_up_to_one():
+    seen = []
+    dilatant.run(TINY, progress=seen.append)
+    assert seen and seen[-1] >= 1.0
+    assert seen == sorted(seen)
+
+
+def test_progress_returning_false_stops_and_resume_completes(tmp_path):
+    longer = {**TINY, "run": {"strain": 2.0, "transient_strain": 0.5}}
+    stopped = dilatant.run(longer, out=tmp_path / "a", progress=lambda f: f < 0.05)
+    assert stopped.interrupted and stopped.summary is None
+    assert (tmp_path / "a" / "checkpoint.bin").exists()
+    resumed = dilatant.run(longer, out=tmp_path / "a", resume=True)
+    assert not resumed.interrupted
+    whole = dilatant.run(longer, out=tmp_path / "b")
+    assert np.array_equal(resumed.timeseries, whole.timeseries)
+    assert (tmp_path / "a" / "checkpoint.bin").read_bytes() == \
+        (tmp_path / "b" / "checkpoint.bin").read_bytes()
+
+
+def test_an_exception_in_progress_stops_the_run(tmp_path):
+    def fail(fraction):
+        raise RuntimeError("stop here")
+    longer = {**TINY, "run": {"strain": 2.0, "transient_strain": 0.5}}
+    with pytest.raises(RuntimeError, match="stop here"):
+        dilatant.run(longer, out=tmp_path, progress=fail)
+    assert (tmp_path / "checkpoint.bin").exists()
+
+
+def test_resume_needs_a_checkpoint(tmp_path):
+    with pytest.raises(dilatant.ConfigError, match="found no checkpoint.bin"):
+        dilatant.run(TINY, out=tmp_path, resume=True)
+
+
+CHILD = """
+import sys, dilatant
+try:
+    dilatant.run({"cell": {"size": [6.0, 5.0, 7.0]}, "run": {"strain": 1000.0}}, out=sys.argv[1],
+                 progress=lambda f: print("running", flush=True) if f > 0 else None)
+except KeyboardInterrupt:
+    print("interrupted", flush=True)
+    sys.exit(5)
+"""
+
+
+def test_ctrl_c_interrupts_cleanly_with_a_checkpoint(tmp_path):
+    child = subprocess.Popen([sys.executable, "-c", CHILD, str(tmp_path)],
+                             stdout=subprocess.PIPE, text=True)
+    assert child.stdout.readline().strip() == "running"
+    time.sleep(0.2)
+    child.send_signal(signal.SIGINT)
+    out, _ = child.communicate(timeout=30)
+    assert child.returncode == 5
+    assert "interrupted" in out
+    assert (tmp_path / "checkpoint.bin").exists()
+    assert (tmp_path / "timeseries.csv").exists()
+
+
+def test_ctrl_c_stops_advance(tmp_path):
+    code = ("import dilatant, sys\n"
+            "cell = dilatant.ShearCell({'cell': {'size': [6.0, 5.0, 7.0]}})\n"
+            "print('built', flush=True)\n"
+            "try:\n"
+            "    cell.advance(strain=1000.0)\n"
+            "except KeyboardInterrupt:\n"
+            "    cell.write_checkpoint(sys.argv[1]); sys.exit(5)\n")
+    child = subprocess.Popen([sys.executable, "-c", code, str(tmp_path / "c.bin")],
+                             stdout=subprocess.PIPE, text=True)
+    assert child.stdout.readline().strip() == "built"
+    time.sleep(0.3)
+    child.send_signal(signal.SIGINT)
+    child.communicate(timeout=30)
+    assert child.returncode == 5
+    assert dilatant.ShearCell.resumed({"cell": {"size": [6.0, 5.0, 7.0]}},
+                                      tmp_path / "c.bin").steps > 0
+
+
+def test_unconverged_steps_are_reported_as_a_warning():
+    with pytest.warns(RuntimeWarning, match=r"steps did not converge within solver"):
+        dilatant.run(TINY, overrides={"solver.max_iterations": 2})
+
+
+SWEEP_CHILD = """
+import sys, dilatant
+sweep = {"cell": {"size": [6.0, 5.0, 7.0]}, "fluid": {"lambda": [10.0, 100.0]},
+         "run": {"strain": 1000.0}, "sweep": {"jobs": 2}}
+print("starting", flush=True)
+try:
+    dilatant.sweep(sweep, sys.argv[1], plots=False)
+except KeyboardInterrupt:
+    sys.exit(5)
+"""
+
+
+def test_ctrl_c_stops_a_sweep_with_its_points_checkpointed(tmp_path):
+    child = subprocess.Popen([sys.executable, "-c", SWEEP_CHILD, str(tmp_path)],
+                             stdout=subprocess.PIPE, text=True)
+    assert child.stdout.readline().strip() == "starting"
+    time.sleep(1.0)
+    child.send_signal(signal.SIGINT)
+    child.communicate(timeout=30)
+    assert child.returncode == 5
+    table = dilatant.read_table(tmp_path / "flowcurves.csv")
+    assert set(table["status"]) == {"pending"}
+    assert len(list(tmp_path.glob("points/*/checkpoint.bin"))) == 2

@@ -1,0 +1,77 @@
+#include "analysis/prediction_report.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "dilatant/version.hpp"
+#include "io/input_error.hpp"
+
+namespace dilatant::analysis {
+
+namespace {
+
+nlohmann::json onset_json(const OnsetPrediction& o, double s_c) {
+  if (!o.available) return nullptr;
+  return {{"rate", o.rate},
+          {"rate_unit", "eta_f/(rho_p R^2)"},
+          {"scale_I2_over_s_c", o.scale},
+          {"prefactor", o.prefactor},
+          {"inertial_number", o.measured.inertial_number},
+          {"s_c", s_c},
+          {"measured_at",
+           {{"mu0", o.measured.mu0},
+            {"phi_bulk", o.measured.phi_bulk},
+            {"s_c", o.measured.s_c},
+            {"onset_rate", o.measured.onset_rate},
+            {"model", o.measured.model},
+            {"source", o.measured.source}}}};
+}
+
+}  // namespace
+
+void check_prediction_input(double mu0, double phi, double s_c, const PredictArgumentNames& names) {
+  if (!(s_c > 0.0) || !std::isfinite(s_c))
+    throw InputError(fmt::format("{} {}: must be a finite number > 0", names.s_c, s_c));
+  if (!(mu0 >= 0.0) || !std::isfinite(mu0))
+    throw InputError(fmt::format("{} {}: must be a finite number >= 0", names.mu0, mu0));
+  if (!(phi > 0.0 && phi < 0.74))
+    throw InputError(fmt::format("{} {}: must be in (0, 0.74)", names.phi, phi));
+}
+
+PredictionReport predict(const JammingTable& table, double mu0, double phi, double s_c,
+                         const PredictArgumentNames& names) {
+  check_prediction_input(mu0, phi, s_c, names);
+  PredictionReport r;
+  r.mu0 = mu0;
+  r.phi = phi;
+  r.s_c = s_c;
+  r.regime = predict_regime(table, mu0, phi);
+  // No flow, no onset: the scale is given for the flowing regimes only.
+  if (r.regime.regime != FlowRegime::NoFlow)
+    r.onset = predict_onset(OnsetTable::builtin(), mu0, phi, s_c);
+  r.mu0_table_max = table.points().back().mu0;
+  return r;
+}
+
+nlohmann::json prediction_json(const PredictionReport& r, const std::string& table_name) {
+  const Prediction& p = r.regime;
+  nlohmann::json j;
+  j["mu0"] = r.mu0;
+  j["phi"] = r.phi;
+  j["regime"] = flow_regime_name(p.regime);
+  j["phi_max_bl"] = p.phi_max_bl.value;
+  j["phi_max_bl_err"] = p.phi_max_bl.error;
+  j["phi_rcp"] = p.phi_rcp.value;
+  j["phi_rcp_err"] = p.phi_rcp.error;
+  j["margin_sigma"] =
+      std::isfinite(p.margin_sigma) ? nlohmann::json(p.margin_sigma) : nlohmann::json(nullptr);
+  j["uncertain"] = p.uncertain;
+  j["mu0_beyond_table"] = r.mu0_beyond_table();
+  j["onset"] = onset_json(r.onset, r.s_c);
+  j["table"] = table_name;
+  j["version"] = kVersion;
+  return j;
+}
+
+}  // namespace dilatant::analysis
