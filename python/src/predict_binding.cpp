@@ -1,6 +1,5 @@
 // The regime predictor (analysis/prediction_report.hpp, `dilatant predict`)
-// and its phase diagram (analysis/phase_diagram.hpp, `predict --grid`). Apart
-// from analysis_binding.cpp: analysis/ has two `Estimate`s, one per header.
+// and its phase diagram (analysis/phase_diagram.hpp, `predict --grid`).
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>

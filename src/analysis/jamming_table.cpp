@@ -42,7 +42,7 @@ JammingTable JammingTable::builtin() {
   return parse(NumericCsv::from_text(kJammingTableCsv, "data/jamming/phi_max_bl.csv (built in)"));
 }
 
-Estimate JammingTable::phi_max_bl(double mu0) const {
+MeasuredFraction JammingTable::phi_max_bl(double mu0) const {
   const auto& p = points_;
   if (mu0 >= p.back().mu0) return {p.back().phi_max, p.back().phi_max_err};
   std::size_t k = 1;
@@ -71,7 +71,7 @@ Prediction predict_regime(const JammingTable& table, double mu0, double phi) {
   out.regime = phi > out.phi_rcp.value      ? FlowRegime::NoFlow
                : phi > out.phi_max_bl.value ? FlowRegime::Dst
                                             : FlowRegime::Cst;
-  const auto sigmas = [&](const Estimate& boundary) {
+  const auto sigmas = [&](const MeasuredFraction& boundary) {
     const double d = std::abs(phi - boundary.value);
     return boundary.error > 0.0 ? d / boundary.error : std::numeric_limits<double>::infinity();
   };

@@ -21,7 +21,7 @@ struct JammingPoint {
   double phi_max_err = 0.0;
 };
 
-struct Estimate {
+struct MeasuredFraction {
   double value = 0.0;
   double error = 0.0;
 };
@@ -38,8 +38,10 @@ class JammingTable {
 
   // Linear in mu0 between the measured points; beyond the last one, the last
   // value (the sediment's fraction saturates with friction: docs/jamming.md).
-  Estimate phi_max_bl(double mu0) const;
-  Estimate phi_rcp() const { return {points_.front().phi_max, points_.front().phi_max_err}; }
+  MeasuredFraction phi_max_bl(double mu0) const;
+  MeasuredFraction phi_rcp() const {
+    return {points_.front().phi_max, points_.front().phi_max_err};
+  }
   const std::vector<JammingPoint>& points() const { return points_; }
 
  private:
@@ -51,8 +53,8 @@ std::string_view flow_regime_name(FlowRegime r);  // "cst", "dst", "no_flow"
 
 struct Prediction {
   FlowRegime regime = FlowRegime::Cst;
-  Estimate phi_max_bl;
-  Estimate phi_rcp;
+  MeasuredFraction phi_max_bl;
+  MeasuredFraction phi_rcp;
   // Distance from phi to the nearer boundary, in units of that boundary's
   // error; below 2 the regime is uncertain.
   double margin_sigma = 0.0;
