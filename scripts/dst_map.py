@@ -17,7 +17,7 @@ Fig. 4 with simulations on it).
 Outcomes: `dst` the ramp flows at low stress and jams above (the jam's cold
 start said `jammed`), `dst?` the same but the cold start flowed or is missing,
 `jammed` no point flowed, `flows` no point jammed (CST or Newtonian over the
-ramp's range), `running` nothing finished yet.
+ramp's range), `running` the ramp has not finished and has not jammed.
 """
 import csv
 import os
@@ -42,7 +42,8 @@ def ramps(rows):
         done = [r for r in points if r["status"] == "done"]
         flowing = [r for r in done if r["jammed"] == "false"]
         jams = [r for r in done if r["jammed"] == "true"]
-        if not done:
+        unfinished = any(r["status"] == "pending" for r in points)
+        if not done or (unfinished and not jams):
             outcome = "running"
         elif not flowing:
             outcome = "jammed"
