@@ -66,6 +66,15 @@ std::string table_without_timing(const fs::path& file) {
   return out;
 }
 
+// How many points the table on disk calls done (0 when there is no table).
+std::size_t done_points(const fs::path& table) {
+  if (!fs::exists(table)) return 0;
+  const std::string t = test::read_text(table);
+  std::size_t done = 0;
+  for (auto at = t.find(",done,"); at != std::string::npos; at = t.find(",done,", at + 1)) ++done;
+  return done;
+}
+
 TEST(SweepKill, TwentySigkillsAndResumesGiveTheUninterruptedTable) {
   test::TempDir dir;
   // The tiny grid, sheared longer and checkpointed often, so that kills land
@@ -83,34 +92,52 @@ TEST(SweepKill, TwentySigkillsAndResumesGiveTheUninterruptedTable) {
   ASSERT_EQ(wait_for(start_sweep(file, dir.path() / "straight")), 0);
   const double straight = std::chrono::duration<double>(Clock::now() - begin).count();
 
-  // Kill after a random 3-9% of the uninterrupted duration. Should the
+  // The first ten kills, and the even ones after, land after a random 3-9%
+  // of the uninterrupted duration (packing, running between checkpoints,
+  // writing files). The odd kills after the tenth first wait until the table
+  // shows a finished point, then land within a random 0-5%: those are the
+  // kills between points, placed by the sweep's own progress rather than by
+  // the clock, so a slow or loaded machine (the sanitizer build beside other
+  // tests) cannot push them all before the first point ends. Should the
   // sweep finish before its 20th kill, it starts over from an empty folder
   // with the delays halved: the 20 kills all land in one sweep.
   std::mt19937 random(19);
   double scale = 1.0;
   int kills = 0, attempts = 0;
   int kills_between_points = 0;  // with some points done and some not
+  const fs::path killed = dir.path() / "killed";
+  const fs::path table = killed / "flowcurves.csv";
   while (kills < 20 && attempts < 400) {
     ++attempts;
-    std::uniform_real_distribution<double> fraction(0.03 * scale, 0.09 * scale);
-    const pid_t pid = start_sweep(file, dir.path() / "killed");
-    std::this_thread::sleep_for(std::chrono::duration<double>(fraction(random) * straight));
-    kill(pid, SIGKILL);
-    const int code = wait_for(pid);
+    const bool after_a_point = kills >= 10 && kills % 2 == 1;
+    std::uniform_real_distribution<double> fraction(after_a_point ? 0.0 : 0.03 * scale,
+                                                    (after_a_point ? 0.05 : 0.09) * scale);
+    const pid_t pid = start_sweep(file, killed);
+    bool exited = false;
+    int code = 0;
+    if (after_a_point)
+      while (done_points(table) == 0) {
+        if (waitpid(pid, &code, WNOHANG) == pid) {
+          exited = true;
+          break;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      }
+    if (!exited) {
+      std::this_thread::sleep_for(std::chrono::duration<double>(fraction(random) * straight));
+      kill(pid, SIGKILL);
+      code = wait_for(pid);
+    } else {
+      code = WIFEXITED(code) ? WEXITSTATUS(code) : -WTERMSIG(code);
+    }
     if (code == -SIGKILL) {
       ++kills;
-      const fs::path table = dir.path() / "killed" / "flowcurves.csv";
-      if (fs::exists(table)) {
-        const std::string t = test::read_text(table);
-        std::size_t done = 0;
-        for (auto at = t.find(",done,"); at != std::string::npos; at = t.find(",done,", at + 1))
-          ++done;
-        if (done > 0 && done < 4) ++kills_between_points;
-      }
+      const std::size_t done = done_points(table);
+      if (done > 0 && done < 4) ++kills_between_points;
       continue;
     }
     ASSERT_EQ(code, 0) << "a resumed sweep failed";
-    fs::remove_all(dir.path() / "killed");
+    fs::remove_all(killed);
     kills = 0;
     kills_between_points = 0;
     scale /= 2.0;
@@ -120,8 +147,8 @@ TEST(SweepKill, TwentySigkillsAndResumesGiveTheUninterruptedTable) {
   EXPECT_GE(kills_between_points, 2);
   std::cout << "kills " << kills << " (" << kills_between_points << " between points), attempts "
             << attempts << ", uninterrupted " << straight << " s\n";
-  ASSERT_EQ(wait_for(start_sweep(file, dir.path() / "killed")), 0);
-  EXPECT_EQ(table_without_timing(dir.path() / "killed" / "flowcurves.csv"),
+  ASSERT_EQ(wait_for(start_sweep(file, killed)), 0);
+  EXPECT_EQ(table_without_timing(table),
             table_without_timing(dir.path() / "straight" / "flowcurves.csv"));
 }
 
