@@ -9,6 +9,7 @@
 
 #include "drivers/model_setup.hpp"
 #include "measure/bulk_fraction.hpp"
+#include "measure/particle_stress.hpp"
 #include "measure/wall_forces.hpp"
 
 namespace dilatant {
@@ -215,6 +216,16 @@ void ShearCell::accumulate(const StepReport& report) {
   a.steps += 1.0;
   a.unconverged += report.solve.converged ? 0.0 : 1.0;
   a.max_overlap = std::max(a.max_overlap, report.max_overlap);
+  // Particle stress over the volume between the walls' centre planes, z = 0 to
+  // Lz (measure/particle_stress.hpp: there its sigma_zx averages to tau); the
+  // mean flow is the no-slip profile the drag also uses.
+  const Tensor3 virial = contact_impulse_moment(contacts);
+  const Tensor3 kinetic = velocity_fluctuation_moment(
+      s.world.bodies, {.shear_rate = s.walls.top().velocity / s.geometry.gap_height,
+                       .z0 = s.geometry.wall_radius_mean});
+  const double volume = area * cell.size[2];
+  for (std::size_t k = 0; k < virial.size(); ++k)
+    a.stress_dt[k] -= (virial[k] + kinetic[k] * dt) / volume;
   if (steady) s.profile.add(s.world, s.walls.body_groups(), dt);
 }
 

@@ -13,9 +13,10 @@ namespace dilatant {
 
 namespace {
 
-// "DILATNT4": rows with the fluid forces' powers, geometry with phi_box (3: rows
-// with the contact residual; 2: contact memory with regime)
-constexpr std::uint64_t kMagic = 0x34544e54414c4944ULL;
+// "DILATNT5": rows with the particle stress tensor (4: rows with the fluid
+// forces' powers, geometry with phi_box; 3: rows with the contact residual;
+// 2: contact memory with regime)
+constexpr std::uint64_t kMagic = 0x35544e54414c4944ULL;
 
 // One function serves both directions so the field order cannot diverge.
 template <class Archive, class State>

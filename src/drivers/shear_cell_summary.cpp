@@ -12,6 +12,48 @@
 
 namespace dilatant {
 
+namespace {
+
+// The particle stress tensor's steady averages (measure/particle_stress.hpp),
+// in the paper's units. mu_eff is the ratio of the means, its error
+// propagated from both as if independent.
+void add_stress(nlohmann::json& j, const std::vector<FlowRow>& rows, double from, double unit) {
+  const auto average = [&](auto field) { return steady_average(rows, from, field); };
+  const auto shear = average([](const FlowRow& r) { return invariants(r.stress).shear; });
+  const auto pressure = average([](const FlowRow& r) { return invariants(r.stress).pressure; });
+  const auto n1 = average([](const FlowRow& r) { return invariants(r.stress).n1; });
+  const auto n2 = average([](const FlowRow& r) { return invariants(r.stress).n2; });
+  j["shear_stress_measured"] = shear.mean / unit;
+  j["shear_stress_measured_err"] = shear.error / unit;
+  j["pressure"] = pressure.mean / unit;
+  j["pressure_err"] = pressure.error / unit;
+  j["n1"] = n1.mean / unit;
+  j["n1_err"] = n1.error / unit;
+  j["n2"] = n2.mean / unit;
+  j["n2_err"] = n2.error / unit;
+  if (pressure.mean > 0.0) {
+    const double mu = shear.mean / pressure.mean;
+    j["mu_eff"] = mu;
+    j["mu_eff_err"] = std::abs(mu) * std::hypot(shear.mean != 0.0 ? shear.error / shear.mean : 0.0,
+                                                pressure.error / pressure.mean);
+  } else {
+    j["mu_eff"] = nullptr;
+    j["mu_eff_err"] = nullptr;
+  }
+  nlohmann::json tensor = nlohmann::json::array();
+  for (int a = 0; a < 3; ++a) {
+    nlohmann::json row = nlohmann::json::array();
+    for (int b = 0; b < 3; ++b) {
+      const int k = tensor_index(a, b);
+      row.push_back(average([k](const FlowRow& r) { return r.stress[k]; }).mean / unit);
+    }
+    tensor.push_back(row);
+  }
+  j["stress_tensor"] = tensor;  // sigma_ab, rows a = x, y, z (the branch's component)
+}
+
+}  // namespace
+
 nlohmann::json cell_summary(const Config& config, const CellUnits& u, const ShearCellState& s,
                             const RunCost& cost) {
   const CellConfig& cell = *config.cell();
@@ -122,6 +164,7 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   j["profile_max_deviation"] = v.mean != 0.0 ? whole.max_deviation / std::abs(v.mean) : 0.0;
   j["normal_stress"] = p.mean / u.stress_unit;
   j["normal_stress_err"] = p.error / u.stress_unit;
+  add_stress(j, s.rows, from, u.stress_unit);
   j["inertial_number"] = rheology.inertial_number;
   j["viscous_number"] = rheology.viscous_number;
   j["frac_bl"] = bl.mean;

@@ -7,16 +7,18 @@ namespace dilatant {
 std::string flow_csv_header() {
   return "t,strain,wall_velocity,gamma_dot,kinetic_energy,contacts,frac_bl,frac_over_slim,"
          "normal_stress,bottom_force_x,iterations,residual,dt,steps,unconverged_steps,"
-         "contact_residual_max,contact_residual_rms\n";
+         "contact_residual_max,contact_residual_rms,shear_stress_measured,pressure,n1,n2\n";
 }
 
 std::string flow_csv_row(const FlowRow& r, double lz) {
+  const StressInvariants sigma = invariants(r.stress);
   return fmt::format(
       "{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.6g},{:.6g},{:.6g},{:.8g},{:.8g},{:.4g},"
-      "{:.3e},{:.4g},{},{},{:.3e},{:.3e}\n",
+      "{:.3e},{:.4g},{},{},{:.3e},{:.3e},{:.8g},{:.8g},{:.8g},{:.8g}\n",
       r.t, r.strain, r.wall_velocity, r.wall_velocity / lz, r.kinetic_energy, r.contacts, r.frac_bl,
       r.frac_over_slim, r.normal_stress, r.bottom_force_x, r.mean_iterations, r.max_residual,
-      r.mean_dt, r.steps, r.unconverged_steps, r.contact_residual_max, r.contact_residual_rms);
+      r.mean_dt, r.steps, r.unconverged_steps, r.contact_residual_max, r.contact_residual_rms,
+      sigma.shear, sigma.pressure, sigma.n1, sigma.n2);
 }
 
 FlowRow IntervalSums::close(double t, double strain) const {
@@ -54,6 +56,7 @@ FlowRow IntervalSums::close(double t, double strain) const {
   r.contact_residual_max = contact_residual_max;
   r.contact_residual_rms = contact_residual_rms / steps;
   r.max_overlap = max_overlap;
+  for (std::size_t k = 0; k < r.stress.size(); ++k) r.stress[k] = stress_dt[k] / time;
   return r;
 }
 

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "measure/particle_stress.hpp"
+
 namespace dilatant {
 
 struct FlowRow {
@@ -37,6 +39,8 @@ struct FlowRow {
   double power_drive = 0.0, power_normal = 0.0, power_bl = 0.0, power_hd = 0.0;
   double power_lubrication = 0.0, power_drag = 0.0;  // fluid forces (fluid/)
   double power_kinetic = 0.0;
+  // Particle stress tensor (measure/particle_stress.hpp), time average, code units.
+  Tensor3 stress{};
 };
 
 std::string flow_csv_header();
@@ -55,6 +59,7 @@ struct IntervalSums {
   double work_drive = 0.0, work_normal = 0.0, work_bl = 0.0, work_hd = 0.0;
   double work_lubrication = 0.0, work_drag = 0.0;
   double kinetic_start = 0.0, kinetic_end = 0.0;  // total, particles and wall
+  Tensor3 stress_dt{};                            // sum over steps of sigma dt
 
   FlowRow close(double t, double strain) const;
 };

@@ -189,7 +189,7 @@ TEST(BadInputCatalogue, DamagedOrForeignCheckpointsAreRefused) {
     return (dir.path() / name).string();
   };
   std::string older = bytes;
-  older[7] = '3';  // the format digit of the magic "DILATNT4"
+  older[7] = '4';  // the format digit of the magic "DILATNT5"
   for (const auto& [folder, names] : std::vector<std::pair<std::string, std::string>>{
            {damaged("truncated", bytes.substr(0, 100)), "truncated"},
            {damaged("older", older), "older dilatant"},

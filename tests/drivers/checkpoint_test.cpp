@@ -46,10 +46,10 @@ TEST(Checkpoint, AnOlderFormatIsNamedAsSuch) {
   {
     std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
     f.seekp(7);
-    f.put('3');  // "DILATNT3": the format before the fluid forces
+    f.put('4');  // "DILATNT4": the format before the stress tensor
   }
-  EXPECT_NE(message_of(file).find("checkpoint of an older dilatant (format 3; this version reads "
-                                  "format 4)"),
+  EXPECT_NE(message_of(file).find("checkpoint of an older dilatant (format 4; this version reads "
+                                  "format 5)"),
             std::string::npos)
       << message_of(file);
   {

@@ -58,6 +58,28 @@ TEST_F(SteadyShear, BottomWallCarriesTheAppliedForce) {
   EXPECT_NEAR(measured, applied, 3.0 * err);
 }
 
+// The particle stress tensor (measure/particle_stress.hpp): in steady flow its
+// sigma_zx is the applied shear stress, and -sigma_zz the walls' normal
+// stress (the identity behind both is checked to round-off in
+// shear_cell_stress_test.cpp; here the averages, within 3 of the run's error
+// bars, bounded so that a noisy run cannot pass more easily).
+TEST_F(SteadyShear, ParticleStressCarriesTheAppliedStress) {
+  const double tau = summary_["shear_stress"], measured = summary_["shear_stress_measured"];
+  const double err = summary_["shear_stress_measured_err"];
+  ASSERT_GT(err, 0.0);
+  // 4 strain units of ~30 spheres: about 11% (the bottom wall's force: 14%).
+  ASSERT_LT(err, 0.2 * tau);
+  EXPECT_NEAR(measured, tau, 3.0 * err);
+  const double p_wall = summary_["normal_stress"], p_wall_err = summary_["normal_stress_err"];
+  const double zz = summary_["stress_tensor"][2][2];
+  ASSERT_LT(p_wall_err, 0.2 * p_wall);
+  EXPECT_NEAR(-zz, p_wall, 3.0 * p_wall_err);
+  // A compressed, frictional packing: positive pressure, 0 < mu_eff < 1.
+  EXPECT_GT(summary_["pressure"].get<double>(), 0.0);
+  EXPECT_GT(summary_["mu_eff"].get<double>(), 0.0);
+  EXPECT_LT(summary_["mu_eff"].get<double>(), 1.0);
+}
+
 // Constant volume: the particles push both walls apart equally.
 TEST_F(SteadyShear, NormalForceEqualOnBothWalls) {
   const double top = summary_["top_wall_force_z"], bottom = summary_["bottom_wall_force_z"];
