@@ -19,6 +19,9 @@ struct Contact {
   double reduced_radius = 0.0;  // R_p of the Sommerfeld number
   double w_n = 0.0;             // normal Delassus coefficient 1/m_i + 1/m_j
   double w_t = 0.0;             // tangential one, adds r^2/I for each sphere
+  // x velocity of the partner's image relative to the partner: k V for an
+  // image k copies up across a Lees–Edwards boundary (geometry/periodic_box.hpp).
+  double image_drift = 0.0;
 
   // Squeeze-film resistance of the pair over the step (fluid/squeeze_film.hpp):
   // its impulse is -lubrication * u_n at the end of the step (0: none).

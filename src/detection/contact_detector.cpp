@@ -81,17 +81,32 @@ void ContactDetector::build_cells(const World& world, double cell_size) {
 void ContactDetector::add_pair_contacts(const World& world, double margin, std::size_t i,
                                         std::vector<Contact>& contacts) const {
   const Bodies& b = world.bodies;
-  std::array<int, 27> neighbours{};
+  // 9 cells in each of the three z rows, and 12 in a row across a Lees–Edwards
+  // boundary: at most 9 + 12 + 12.
+  std::array<int, 33> neighbours{};
   {
     const int ci = body_cell_[i];
     const int cx = ci % n_cells_[0], cy = (ci / n_cells_[0]) % n_cells_[1],
               cz = ci / (n_cells_[0] * n_cells_[1]);
+    const bool sheared = world.box.lees_edwards && world.box.periodic[2];
     // Neighbour cells, each once even when a periodic axis has fewer than 3 cells.
     int count = 0;
     for (int dz = -1; dz <= 1; ++dz) {
+      // Across z under Lees–Edwards the copy above is displaced by +offset, so
+      // its bodies near x_i came from x_i - offset: the x range of cells moves
+      // by -offset/edge (+offset/edge below) and, not falling on a cell
+      // border, spans four cells instead of three.
+      const int z = cz + dz;
+      const bool across = sheared && (z < 0 || z >= n_cells_[2]);
+      int x_first = cx - 1, x_last = cx + 1;
+      if (across) {
+        const double shift = (z < 0 ? 1.0 : -1.0) * world.box.shear_offset / cell_edge_[0];
+        x_first = static_cast<int>(std::floor(cx - 1 + shift));
+        x_last = x_first + 3;
+      }
       for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) {
-          std::array<int, 3> c = {cx + dx, cy + dy, cz + dz};
+        for (int x = x_first; x <= x_last; ++x) {
+          std::array<int, 3> c = {x, cy + dy, z};
           bool inside = true;
           for (int k = 0; k < 3; ++k) {
             if (c[k] >= 0 && c[k] < n_cells_[k]) continue;
@@ -99,7 +114,7 @@ void ContactDetector::add_pair_contacts(const World& world, double margin, std::
               inside = false;
               break;
             }
-            c[k] = (c[k] + n_cells_[k]) % n_cells_[k];
+            c[k] = ((c[k] % n_cells_[k]) + n_cells_[k]) % n_cells_[k];
           }
           if (inside) neighbours[count++] = (c[2] * n_cells_[1] + c[1]) * n_cells_[0] + c[0];
         }
@@ -114,7 +129,8 @@ void ContactDetector::add_pair_contacts(const World& world, double margin, std::
       for (int s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s) {
         const auto j = static_cast<std::size_t>(cell_body_[s]);
         if (j <= i || (b.is_fixed(i) && b.is_fixed(j))) continue;
-        const Vec3 d = world.box.minimum_image(b.position[i], b.position[j]);
+        const PeriodicBox::Image image = world.box.nearest_image(b.position[i], b.position[j]);
+        const Vec3& d = image.d;
         const double dist = d.norm();
         const double gap = dist - b.radius[i] - b.radius[j];
         if (gap > margin) continue;
@@ -123,6 +139,7 @@ void ContactDetector::add_pair_contacts(const World& world, double margin, std::
         c.other = static_cast<std::int32_t>(j);
         c.normal = dist > 0.0 ? Vec3(d / dist) : Vec3::UnitZ();
         c.gap = gap;
+        c.image_drift = sheared ? image.image * world.box.shear_velocity : 0.0;
         finish_contact(b, c);
         contacts.push_back(c);
       }

@@ -13,7 +13,8 @@ namespace dilatant {
 
 namespace {
 
-// "DILATNT5": rows with the particle stress tensor (4: rows with the fluid
+// "DILATNT5": rows with the particle stress tensor, the box's Lees–Edwards
+// state (4: rows with the fluid
 // forces' powers, geometry with phi_box; 3: rows with the contact residual;
 // 2: contact memory with regime)
 constexpr std::uint64_t kMagic = 0x35544e54414c4944ULL;
@@ -39,6 +40,9 @@ void visit_state(Archive& a, State& s) {
   }
   a.value(s.world.box.length);
   a.value(s.world.box.periodic);
+  a.value(s.world.box.lees_edwards);
+  a.value(s.world.box.shear_offset);
+  a.value(s.world.box.shear_velocity);
   a.value(s.world.gravity);
   a.value(s.world.time);
   auto& wall = s.walls.top();

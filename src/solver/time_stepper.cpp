@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <span>
 
 namespace dilatant {
@@ -16,6 +17,8 @@ double TimeStepper::detection_margin(const World& world) const {
     v_max = std::max(v_max, b.velocity[i].norm() + b.radius[i] * b.angular_velocity[i].norm());
     r_max = std::max(r_max, b.radius[i]);
   }
+  // Images across a Lees–Edwards boundary move at +-shear_velocity besides.
+  if (world.box.lees_edwards) v_max += std::abs(world.box.shear_velocity);
   return 4.0 * v_max * dt_ + 1e-3 * r_max;
 }
 
@@ -142,9 +145,13 @@ StepReport TimeStepper::step(World& world, Boundary* boundary) {
   report.contact_work = contact_work(contacts_, free_velocity_, end_velocity_);
 
   // 6. integrate positions with the end-of-step velocities (a body of infinite
-  // mass may still move at a prescribed velocity, like a driven wall)
+  // mass may still move at a prescribed velocity, like a driven wall); a body
+  // leaving through a Lees–Edwards boundary re-enters where the copies have
+  // moved to at the step's end.
+  world.box.advance_shear(dt_);
   for (std::size_t i = 0; i < b.size(); ++i) {
-    b.position[i] = world.box.wrap(b.position[i] + dt_ * b.velocity[i]);
+    b.position[i] += dt_ * b.velocity[i];
+    world.box.wrap_body(b.position[i], b.velocity[i]);
   }
   world.time += dt_;
   report.kinetic_energy = b.kinetic_energy();
