@@ -72,6 +72,16 @@ int run_cell(const Config& config, const RunOptions& options, bool resume,
     return 1;
   }
   warn_if_unconverged(config, outcome.steps, outcome.unconverged_steps);
+  if (outcome.max_overlap > outcome.overlap_tolerance) {
+    const bool plane = outcome.max_overlap_body_j < 0;
+    std::cerr << fmt::format(
+        "dilatant: warning: overlap {:.3g} R at step {} between body {} and {} {}, above the "
+        "tolerance {:.3g} R (summary.json: overlap_exceeded)\n",
+        outcome.max_overlap, outcome.max_overlap_step, outcome.max_overlap_body_i,
+        plane ? "plane" : "body",
+        plane ? -outcome.max_overlap_body_j - 1 : outcome.max_overlap_body_j,
+        outcome.overlap_tolerance);
+  }
   if (!options.quiet) {
     std::cout << fmt::format("dilatant: {} steps{}; results in {}\n", outcome.steps,
                              outcome.jammed ? " (the cell jammed)" : "", options.out_dir.string());

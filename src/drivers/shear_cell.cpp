@@ -149,7 +149,12 @@ const StepReport& ShearCell::step() {
   if (fluid_)
     fluid_->set_ambient(
         {.shear_rate = wall.velocity / s.geometry.gap_height, .z0 = s.geometry.wall_radius_mean});
-  last_ = stepper_.step(s.world, &s.walls);
+  try {
+    last_ = stepper_.step(s.world, &s.walls);
+  } catch (const NumericalFault& fault) {
+    throw NumericalFault(fmt::format("step {} (strain {:.4g}): {}; the run is stopped", s.steps + 1,
+                                     s.strain, fault.what()));
+  }
   cost_.detection_s += last_.detection_seconds;
   cost_.solve_s += last_.solve_seconds;
   cost_.contact_updates += last_.solve.contact_visits;
@@ -215,7 +220,15 @@ void ShearCell::accumulate(const StepReport& report) {
   a.contact_residual_rms += std::hypot(r.normal_rms, r.tangential_rms);
   a.steps += 1.0;
   a.unconverged += report.solve.converged ? 0.0 : 1.0;
-  a.max_overlap = std::max(a.max_overlap, report.max_overlap);
+  if (report.max_overlap > a.max_overlap && report.max_overlap_contact >= 0) {
+    const Contact& c = contacts[static_cast<std::size_t>(report.max_overlap_contact)];
+    const Bodies& b = s.world.bodies;
+    a.max_overlap = report.max_overlap;
+    a.max_overlap_step = double(s.steps);
+    a.max_overlap_body_i = double(b.id[static_cast<std::size_t>(c.i)]);
+    a.max_overlap_body_j =
+        c.with_plane() ? double(c.other) : double(b.id[static_cast<std::size_t>(c.other)]);
+  }
   // Particle stress over the volume between the walls' centre planes, z = 0 to
   // Lz (measure/particle_stress.hpp: there its sigma_zx averages to tau); the
   // mean flow is the no-slip profile the drag also uses.

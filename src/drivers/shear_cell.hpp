@@ -69,6 +69,11 @@ class ShearCell {
   // Time spent so far in detection, solve and measurement, and the work done.
   const RunCost& cost() const { return cost_; }
 
+  // The largest overlap a sound run leaves, as a fraction of the smallest
+  // radius (docs/model.md "Overlaps"): linearising the gap over one step
+  // gives (0.02 r)^2 / r = 4e-4 r, unconverged solves more; beyond 1% a run
+  // is warned about and its summary says overlap_exceeded.
+  static constexpr double kOverlapTolerance = 0.01;
   static constexpr double kJamWindow = 50.0;
   static constexpr double kJamStrain = 1e-4;
 

@@ -24,8 +24,16 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 CellOutcome outcome_of(const ShearCell& cell, bool interrupted) {
   CellOutcome outcome;
   outcome.steps = cell.state().steps;
-  for (const FlowRow& r : cell.state().rows)
+  for (const FlowRow& r : cell.state().rows) {
     outcome.unconverged_steps += static_cast<long>(r.unconverged_steps);
+    if (r.max_overlap > outcome.max_overlap && r.max_overlap_step >= 0.0) {
+      outcome.max_overlap = r.max_overlap;
+      outcome.max_overlap_step = static_cast<long>(r.max_overlap_step);
+      outcome.max_overlap_body_i = static_cast<long long>(r.max_overlap_body_i);
+      outcome.max_overlap_body_j = static_cast<long long>(r.max_overlap_body_j);
+    }
+  }
+  outcome.overlap_tolerance = ShearCell::kOverlapTolerance * cell.config().cell()->radius_min;
   outcome.jammed = cell.state().jammed;
   outcome.interrupted = interrupted;
   return outcome;

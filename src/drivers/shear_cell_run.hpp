@@ -41,6 +41,11 @@ struct CellRunOptions {
 struct CellOutcome {
   long steps = 0;
   long unconverged_steps = 0;
+  // The run's largest overlap, where it was, and the tolerance it is held to
+  // (ShearCell::kOverlapTolerance): step -1 when there was none.
+  double max_overlap = 0.0, overlap_tolerance = 0.0;
+  long max_overlap_step = -1;
+  long long max_overlap_body_i = -1, max_overlap_body_j = -1;
   bool interrupted = false;
   bool jammed = false;
 };

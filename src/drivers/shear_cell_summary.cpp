@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "dilatant/version.hpp"
+#include "drivers/shear_cell.hpp"
 #include "measure/bulk_fraction.hpp"
 #include "measure/rheology.hpp"
 #include "measure/steadiness.hpp"
@@ -73,8 +74,10 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   const auto fz_top = steady_average(s.rows, from, [](const FlowRow& r) { return r.top_force_z; });
   const auto fz_bottom =
       steady_average(s.rows, from, [](const FlowRow& r) { return r.bottom_force_z; });
-  double max_overlap = 0.0;
-  for (const FlowRow& r : s.rows) max_overlap = std::max(max_overlap, r.max_overlap);
+  const FlowRow* deepest = nullptr;  // the row holding the run's largest overlap
+  for (const FlowRow& r : s.rows)
+    if (deepest == nullptr || r.max_overlap > deepest->max_overlap) deepest = &r;
+  const double max_overlap = deepest != nullptr ? deepest->max_overlap : 0.0;
   const auto fx = steady_average(s.rows, from, [](const FlowRow& r) { return r.bottom_force_x; });
   const auto sliding_bl =
       steady_average(s.rows, from, [](const FlowRow& r) { return r.sliding_bl; });
@@ -196,6 +199,19 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   j["bottom_wall_force_z"] = fz_bottom.mean;  // negative: the bottom wall is pushed down
   j["bottom_wall_force_z_err"] = fz_bottom.error;
   j["max_overlap"] = max_overlap;
+  // Where it was (step, and the bodies' ids; a plane k as -(k+1)), and whether
+  // it exceeds the tolerance of docs/model.md "Overlaps" (a run that does is
+  // warned about; its numbers are suspect).
+  if (deepest != nullptr && deepest->max_overlap_step >= 0.0) {
+    j["max_overlap_step"] = static_cast<long long>(deepest->max_overlap_step);
+    j["max_overlap_bodies"] = {static_cast<long long>(deepest->max_overlap_body_i),
+                               static_cast<long long>(deepest->max_overlap_body_j)};
+  } else {
+    j["max_overlap_step"] = nullptr;
+    j["max_overlap_bodies"] = nullptr;
+  }
+  j["overlap_tolerance"] = ShearCell::kOverlapTolerance * cell.radius_min;
+  j["overlap_exceeded"] = max_overlap > ShearCell::kOverlapTolerance * cell.radius_min;
   j["applied_force_x"] = cell.shear_stress * area;
   // Energy budget of the steady state, code units (force x velocity): the drive's
   // power equals the dissipation in impacts and friction plus d(KE)/dt.

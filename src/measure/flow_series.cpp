@@ -56,6 +56,9 @@ FlowRow IntervalSums::close(double t, double strain) const {
   r.contact_residual_max = contact_residual_max;
   r.contact_residual_rms = contact_residual_rms / steps;
   r.max_overlap = max_overlap;
+  r.max_overlap_step = max_overlap_step;
+  r.max_overlap_body_i = max_overlap_body_i;
+  r.max_overlap_body_j = max_overlap_body_j;
   for (std::size_t k = 0; k < r.stress.size(); ++k) r.stress[k] = stress_dt[k] / time;
   return r;
 }

@@ -33,7 +33,9 @@ struct FlowRow {
   // step of the interval, and the step-mean of the RMS over contacts.
   double contact_residual_max = 0.0, contact_residual_rms = 0.0;
   double phi_bulk = 0.0;     // central half of the gap, at the end of the interval
-  double max_overlap = 0.0;  // largest overlap at the end of any step of the interval
+  double max_overlap = 0.0;  // largest overlap at the end of any step of the interval,
+  // in this step, between these bodies (ids; a plane k as -(k+1), as contacts.csv)
+  double max_overlap_step = -1.0, max_overlap_body_i = -1.0, max_overlap_body_j = -1.0;
   // Powers: drive, contact work by kind (< 0: dissipation; solver/contact_work.hpp),
   // and the rate of change of the total kinetic energy (particles and wall).
   double power_drive = 0.0, power_normal = 0.0, power_bl = 0.0, power_hd = 0.0;
@@ -56,6 +58,7 @@ struct IntervalSums {
   double iterations = 0.0, max_residual = 0.0, steps = 0.0, unconverged = 0.0;
   double contact_residual_max = 0.0, contact_residual_rms = 0.0;  // max; sum over steps
   double max_overlap = 0.0;
+  double max_overlap_step = -1.0, max_overlap_body_i = -1.0, max_overlap_body_j = -1.0;
   double work_drive = 0.0, work_normal = 0.0, work_bl = 0.0, work_hd = 0.0;
   double work_lubrication = 0.0, work_drag = 0.0;
   double kinetic_start = 0.0, kinetic_end = 0.0;  // total, particles and wall

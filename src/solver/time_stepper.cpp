@@ -1,9 +1,13 @@
 #include "solver/time_stepper.hpp"
 
+#include <fmt/format.h>
+#include <omp.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <span>
+#include <tuple>
 
 namespace dilatant {
 
@@ -52,27 +56,35 @@ void TimeStepper::relative_velocities(const Bodies& bodies, std::vector<Vec3>& o
   }
 }
 
-double TimeStepper::largest_overlap(const World& world) const {
-  double overlap = 0.0;
+std::pair<double, std::int32_t> TimeStepper::largest_overlap(const World& world) const {
   const Bodies& b = world.bodies;
   const auto n = static_cast<std::int64_t>(contacts_.size());
-  const int threads = settings_.threads;
-  // A maximum: the same value whatever the threads' order.
-#pragma omp parallel for schedule(static) num_threads(std::max(1, threads)) if (threads > 1) \
-    reduction(max                                                                            \
-              : overlap)
-  for (std::int64_t k = 0; k < n; ++k) {
-    const Contact& c = contacts_[static_cast<std::size_t>(k)];
-    double gap;
-    if (c.with_plane()) {
-      gap = world.planes[c.plane_index()].distance(b.position[c.i]) - b.radius[c.i];
-    } else {
-      gap = world.box.minimum_image(b.position[c.i], b.position[c.other]).norm() - b.radius[c.i] -
-            b.radius[c.other];
+  const int threads = std::max(1, settings_.threads);
+  // Each thread's deepest overlap over its static block of contacts; the
+  // blocks are in order, so taking the first of equal depths below gives the
+  // serial answer.
+  std::vector<std::pair<double, std::int32_t>> deepest(static_cast<std::size_t>(threads),
+                                                       {0.0, -1});
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  {
+    auto& mine = deepest[static_cast<std::size_t>(omp_get_thread_num())];
+#pragma omp for schedule(static)
+    for (std::int64_t k = 0; k < n; ++k) {
+      const Contact& c = contacts_[static_cast<std::size_t>(k)];
+      double gap;
+      if (c.with_plane()) {
+        gap = world.planes[c.plane_index()].distance(b.position[c.i]) - b.radius[c.i];
+      } else {
+        gap = world.box.minimum_image(b.position[c.i], b.position[c.other]).norm() - b.radius[c.i] -
+              b.radius[c.other];
+      }
+      if (-gap > mine.first) mine = {-gap, static_cast<std::int32_t>(k)};
     }
-    overlap = std::max(overlap, -gap);
   }
-  return overlap;
+  std::pair<double, std::int32_t> out{0.0, -1};
+  for (const auto& d : deepest)
+    if (d.first > out.first) out = d;
+  return out;
 }
 
 StepReport TimeStepper::step(World& world, Boundary* boundary) {
@@ -155,7 +167,14 @@ StepReport TimeStepper::step(World& world, Boundary* boundary) {
   }
   world.time += dt_;
   report.kinetic_energy = b.kinetic_energy();
-  report.max_overlap = largest_overlap(world);
+  std::tie(report.max_overlap, report.max_overlap_contact) = largest_overlap(world);
+  // Never a silent bad number: a body whose state is no longer finite stops
+  // the run here, named, before anything reads it.
+  if (const std::ptrdiff_t bad = b.first_non_finite(); bad >= 0)
+    throw NumericalFault(fmt::format(
+        "numerical fault at t = {:.6g}: body {} (id {}) has a non-finite position, velocity or "
+        "spin",
+        world.time, bad, b.id[static_cast<std::size_t>(bad)]));
   return report;
 }
 

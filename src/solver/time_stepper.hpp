@@ -17,7 +17,9 @@
 // The stepper knows no particular cell: a boundary and fluid forces are given
 // to it (both optional; without them it integrates a plain granular world).
 #include <cstdint>
+#include <stdexcept>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "boundary/boundary.hpp"
@@ -36,14 +38,22 @@ struct StepReport {
   SolveReport solve;
   ContactResidual contact_residual;  // of the impulses the solve ended with
   std::size_t contacts_detected = 0;
-  std::size_t contacts_closed = 0;   // contacts carrying a normal impulse
-  double kinetic_energy_free = 0.0;  // after prediction, before drag and contacts act
-  double kinetic_energy = 0.0;       // at the end of the step
-  double max_overlap = 0.0;          // largest overlap at the end of the step
-  ContactWork contact_work;          // KE(end) - KE(free) by contact kind ...
-  double drag_work = 0.0;            // ... and the drag's share (fluid/implicit_drag.hpp)
-  double detection_seconds = 0.0;    // stages 2-3: detection, slab order, warm start
-  double solve_seconds = 0.0;        // stage 4
+  std::size_t contacts_closed = 0;        // contacts carrying a normal impulse
+  double kinetic_energy_free = 0.0;       // after prediction, before drag and contacts act
+  double kinetic_energy = 0.0;            // at the end of the step
+  double max_overlap = 0.0;               // largest overlap at the end of the step ...
+  std::int32_t max_overlap_contact = -1;  // ... at this index of contacts() (-1: none)
+  ContactWork contact_work;               // KE(end) - KE(free) by contact kind ...
+  double drag_work = 0.0;                 // ... and the drag's share (fluid/implicit_drag.hpp)
+  double detection_seconds = 0.0;         // stages 2-3: detection, slab order, warm start
+  double solve_seconds = 0.0;             // stage 4
+};
+
+// A state the step cannot continue from (a non-finite body). Drivers add the
+// step and strain to the message and stop the run.
+class NumericalFault : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 class TimeStepper {
@@ -80,7 +90,9 @@ class TimeStepper {
   void warm_start(Bodies& bodies);
   // Relative velocity at every contact of contacts_, for contact_work.
   void relative_velocities(const Bodies& bodies, std::vector<Vec3>& out) const;
-  double largest_overlap(const World& world) const;
+  // The largest overlap at the end of the step and its contact (the first of
+  // equal ones: the same whatever the threads).
+  std::pair<double, std::int32_t> largest_overlap(const World& world) const;
 
   FrictionLaw law_;
   const FluidForces* fluid_ = nullptr;

@@ -18,6 +18,14 @@ void Bodies::add_sphere(std::int64_t user_id, const Vec3& x, double r, double de
   id.push_back(user_id);
 }
 
+std::ptrdiff_t Bodies::first_non_finite() const {
+  for (std::size_t i = 0; i < size(); ++i) {
+    if (!position[i].allFinite() || !velocity[i].allFinite() || !angular_velocity[i].allFinite())
+      return static_cast<std::ptrdiff_t>(i);
+  }
+  return -1;
+}
+
 double Bodies::kinetic_energy() const {
   double e = 0.0;
   for (std::size_t i = 0; i < size(); ++i) {

@@ -2,6 +2,7 @@
 // All spheres of a simulation, stored as contiguous arrays (structure of arrays):
 // the solver's hot loop touches only velocities and inverse masses, so keeping
 // them apart from positions and bookkeeping keeps the loop in cache.
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -27,6 +28,9 @@ struct Bodies {
 
   double mass(std::size_t i) const { return inv_mass[i] > 0.0 ? 1.0 / inv_mass[i] : 0.0; }
   double kinetic_energy() const;
+  // Index of the first body with a non-finite position, velocity or spin, or -1:
+  // a state that has blown up (drivers stop on it, never write it as a result).
+  std::ptrdiff_t first_non_finite() const;
   Vec3 momentum() const;
 
   // Puts body order[k] at index first + k (order is a permutation of

@@ -94,6 +94,13 @@ TEST_F(SteadyShear, NormalForceEqualOnBothWalls) {
 // from unconverged solves; 1% of the smallest radius bounds both.
 TEST_F(SteadyShear, NoOverlapAboveTolerance) {
   EXPECT_LT(summary_["max_overlap"].get<double>(), 0.01 * 0.8);
+  // Where it was is named, and held to the same tolerance.
+  EXPECT_FALSE(summary_["overlap_exceeded"].get<bool>());
+  EXPECT_DOUBLE_EQ(summary_["overlap_tolerance"].get<double>(), 0.01 * 0.8);
+  EXPECT_GE(summary_["max_overlap_step"].get<long>(), 0);
+  EXPECT_LE(summary_["max_overlap_step"].get<long>(), summary_["steps"].get<long>());
+  ASSERT_EQ(summary_["max_overlap_bodies"].size(), 2u);
+  EXPECT_GE(summary_["max_overlap_bodies"][0].get<long>(), 0);
 }
 
 // Energy: the drive's power goes into perfectly inelastic impacts, friction and
