@@ -66,6 +66,24 @@ TEST(AnalyzeCommand, WithoutPythonThePlotsAreSkippedAndTheTablesWritten) {
   EXPECT_FALSE(fs::exists(out / "collapse.png"));
 }
 
+// A sample whose every point jammed (the s_c 5e-4 ramp of the onset's s_c
+// scaling, docs/paper-reproduction.md) has nothing to draw on log axes: its
+// panel says so and the other samples' plots are still drawn.
+TEST(AnalyzeCommand, ASampleWithOnlyJammedPointsStillGetsItsPlots) {
+  if (!test::matplotlib_available()) GTEST_SKIP() << "no matplotlib";
+  test::CliDir dir;
+  const fs::path out = dir.path() / "out";
+  const auto r =
+      dir.run({"analyze", (kSource / "tests/analysis/data/sample-all-jammed.csv").string(), "--out",
+               out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  const auto rows = lines(read_text(out / "curves.csv"));
+  ASSERT_EQ(rows.size(), 1u + 3u);
+  EXPECT_NE(rows[1].find(",jammed,"), std::string::npos) << rows[1];
+  for (const auto& plot : kPlots) EXPECT_GT(fs::file_size(out / (plot + ".png")), 1000u) << plot;
+}
+
 TEST(AnalyzeCommand, ASweepTableGivesNPerPhiAndMu0) {
   test::CliDir dir;
   const fs::path out = dir.path() / "out";

@@ -55,6 +55,7 @@ def flow_curves(out, samples, curves, points, units):
                                        min(phis) + 1e-3)
     cmap = matplotlib.colormaps["viridis"]
     for ax, sample in zip(axes.flat, samples):
+        flowed = False  # a sample whose every point jammed has nothing to log-scale
         for index, c in enumerate(curves):
             if c["sample"] != sample:
                 continue
@@ -65,6 +66,7 @@ def flow_curves(out, samples, curves, points, units):
             eta = np.array([number(p["viscosity"]) for p in flowing])
             valid = np.array([p["valid"] == "true" for p in flowing], dtype=bool)
             window = np.array([p["in_window"] == "true" for p in flowing], dtype=bool)
+            flowed |= bool(np.any((rate > 0) & (eta > 0)))
             label = f"$\\phi$ = {c['phi']} ({c['regime']}"
             label += f", n = {number(c['n']):.2g})" if c["n"] not in ("", "inf") else ")"
             if any(p["jammed"] == "true" for p in pts):
@@ -86,11 +88,15 @@ def flow_curves(out, samples, curves, points, units):
             if math.isfinite(k) and math.isfinite(n) and window.any():
                 g = np.geomspace(rate[window].min(), rate[window].max(), 20)
                 ax.plot(g, k * g ** n, "--", color="k", lw=0.8)
-        ax.set_xscale("log")
-        ax.set_yscale("log")
         ax.set_xlabel(xlabel)
         ax.set_ylabel(ylabel)
         ax.set_title(f"sample {sample}")
+        if not flowed:
+            ax.text(0.5, 0.5, "no flowing point: every point jammed", ha="center",
+                    transform=ax.transAxes, fontsize=8)
+            continue
+        ax.set_xscale("log")
+        ax.set_yscale("log")
         ax.legend(fontsize=6, loc="upper left")
     for ax in list(axes.flat)[len(samples):]:
         ax.set_visible(False)
