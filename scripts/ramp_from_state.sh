@@ -3,11 +3,16 @@
 # cold start: each lambda runs from the previous point's final checkpoint.
 # Resumable: a point whose summary.json exists is kept; the ramp stops at its
 # first jam.
-#   scripts/ramp_from_state.sh CONFIG START_CHECKPOINT OUT LAMBDA...
+#   scripts/ramp_from_state.sh CONFIG START_CHECKPOINT OUT [--set KEY=VALUE]... LAMBDA...
 #   (DILATANT=path/to/dilatant, default build/dilatant)
 set -euo pipefail
 config=$1 start=$2 out=$3
 shift 3
+sets=()
+while [[ $# -gt 0 && $1 == --set ]]; do
+  sets+=(--set "$2")
+  shift 2
+done
 dilatant=${DILATANT:-build/dilatant}
 previous=$start
 mkdir -p "$out"
@@ -17,9 +22,11 @@ for lambda in "$@"; do
     resume=()
     [[ -f "$point/checkpoint.bin" ]] && resume=(--resume)
     if ((${#resume[@]} == 0)); then
-      "$dilatant" run "$config" --start-from "$previous" --set "fluid.lambda=$lambda" --out "$point" -q
+      "$dilatant" run "$config" --start-from "$previous" "${sets[@]}" --set "fluid.lambda=$lambda" \
+        --out "$point" -q
     else
-      "$dilatant" run "$config" --set "fluid.lambda=$lambda" --out "$point" --resume -q
+      "$dilatant" run "$config" "${sets[@]}" --set "fluid.lambda=$lambda" --out "$point" \
+        --resume -q
     fi
   fi
   if grep -q '"jammed": true' "$point/summary.json"; then
