@@ -1,5 +1,7 @@
 #include "io/atomic_file.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
 #include <system_error>
 
@@ -23,7 +25,7 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
 
 AtomicFileWriter::AtomicFileWriter(std::filesystem::path path)
     : path_(std::move(path)), part_(part_path(path_)), out_(part_) {
-  if (!out_) fail(part_, "cannot open for writing");
+  if (!out_) fail(part_, ("cannot open for writing: " + std::string(std::strerror(errno))).c_str());
 }
 
 AtomicFileWriter::~AtomicFileWriter() {
@@ -34,10 +36,16 @@ AtomicFileWriter::~AtomicFileWriter() {
 }
 
 void AtomicFileWriter::commit() {
+  // errno says why (no space left, file too large, read-only file system):
+  // the failing write may have happened before, when the stream's buffer
+  // filled, and a successful call never clears errno, so it is not reset here.
   out_.flush();
-  if (!out_) fail(part_, "write failed");
+  if (!out_) fail(part_, errno != 0 ? std::strerror(errno) : "write failed");
   out_.close();
-  std::filesystem::rename(part_, path_);
+  if (!out_) fail(part_, errno != 0 ? std::strerror(errno) : "closing failed");
+  std::error_code ec;
+  std::filesystem::rename(part_, path_, ec);
+  if (ec) fail(path_, ("cannot rename from .part: " + ec.message()).c_str());
   committed_ = true;
 }
 
