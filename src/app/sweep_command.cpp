@@ -49,6 +49,9 @@ CLI::App* add_sweep_command(CLI::App& app, SweepCommandArgs& args) {
                   "e.g. 'fluid.lambda=[1.0, 10.0]'; sweep.jobs=2 sets [sweep] (repeatable)")
       ->allow_extra_args(false);
   cmd->add_flag("-q,--quiet", args.quiet, "No progress, notes or final message");
+  cmd->add_flag("--progress", args.progress,
+                "Draw the progress line even when stderr is not a terminal (under mpirun, "
+                "whose ranks write to a pipe)");
   cmd->add_flag("--no-plots", args.no_plots, "Write the tables only, no plots");
   cmd->add_option("--python", args.python, "Python with matplotlib that draws the plots")
       ->capture_default_str();
@@ -105,8 +108,7 @@ std::optional<int> load_plan(const SweepCommandArgs& args, const sweep::MpiSessi
   if (mpi.rank() == 0) {
     if (error != nullptr) std::rethrow_exception(error);
     throw std::runtime_error(
-        "another rank of the MPI job could not read the sweep (its message "
-        "is above)");
+        "another rank of the MPI job could not read the sweep (its message is above)");
   }
   if (error == nullptr) return 0;
   if (rank0_read_it) {
@@ -137,7 +139,7 @@ int execute_sweep_command(const SweepCommandArgs& args) {
   options.jobs =
       on_ranks ? resolve_jobs_per_rank(args.jobs, plan.settings.jobs, mpi.ranks_on_this_node())
                : resolve_jobs(args.jobs, plan.settings.jobs);
-  options.show_progress = lead && !args.quiet && isatty(STDERR_FILENO);
+  options.show_progress = lead && !args.quiet && (args.progress || isatty(STDERR_FILENO));
   options.report_failures = lead && !args.quiet;
   options.stop = &g_stop_requested;
   // SIGINT/SIGTERM: the running points write a checkpoint and stop.
