@@ -11,6 +11,7 @@ packages=(
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libeigen3-dev libfmt-dev  # libraries
   python3 python3-numpy python3-matplotlib python3-vtk9  # figures and post-processing scripts
   python3-dev python3-pybind11 python3-pytest      # the Python module and its tests
+  openmpi-bin libopenmpi-dev                        # MPI sweeps (docs/cluster.md)
   clang-format                                      # formatting check (scripts/test.sh)
 )
 packages+=("$@")

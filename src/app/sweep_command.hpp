@@ -14,6 +14,7 @@ struct SweepCommandArgs {
   int jobs = -1;    // -1: [sweep] jobs, else one per core; 0: one per core
   std::vector<std::string> overrides;
   bool quiet = false;
+  bool progress = false;  // the progress line even when stderr is no terminal (mpirun)
   bool no_plots = false;
   std::string python = "/usr/bin/python3";  // Debian's, with matplotlib
   std::string plot_script;                  // empty: the one of this source tree

@@ -3,21 +3,16 @@
 // flowcurves.csv as a sweep that was never interrupted. SIGKILL gives the
 // program no chance to react: what survives is what the atomic writes
 // (io/atomic_file.hpp) and the checkpoints left on disk.
-#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <fstream>
 #include <iostream>
 #include <random>
-#include <sstream>
 #include <thread>
 
-#include "analysis/delimited_text.hpp"
-#include "app/cli_runner.hpp"
+#include "sweep/child_sweep.hpp"
 #include "sweep/tiny_sweep.hpp"
 
 namespace dilatant {
@@ -28,52 +23,13 @@ using Clock = std::chrono::steady_clock;
 
 // `dilatant sweep FILE --out OUT` as a child process, stdout/stderr to /dev/null.
 pid_t start_sweep(const fs::path& file, const fs::path& out) {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const int null = open("/dev/null", O_RDWR);
-    dup2(null, 0);
-    dup2(null, 1);
-    dup2(null, 2);
-    execl(DILATANT_EXECUTABLE, DILATANT_EXECUTABLE, "sweep", file.c_str(), "--out", out.c_str(),
-          "--jobs", "2", "--no-plots", "-q", static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  return pid;
+  return test::start_child({DILATANT_EXECUTABLE, "sweep", file.string(), "--out", out.string(),
+                            "--jobs", "2", "--no-plots", "-q"});
 }
 
-// Waits for the child; its exit code, or -signal when a signal ended it.
-int wait_for(pid_t pid) {
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
-}
-
-// The table with the wall-time column blanked (the only one that differs
-// between two runs of the same points).
-std::string table_without_timing(const fs::path& file) {
-  std::istringstream in(test::read_text(file));
-  std::string out, line;
-  std::size_t timing = std::string::npos;
-  while (std::getline(in, line)) {
-    auto fields = analysis::split_fields(line, ',');
-    if (timing == std::string::npos)
-      for (std::size_t k = 0; k < fields.size(); ++k)
-        if (fields[k] == "wall_time_s") timing = k;
-    if (!out.empty() && timing < fields.size()) fields[timing] = "";
-    for (const auto& f : fields) out += f + "|";
-    out += "\n";
-  }
-  return out;
-}
-
-// How many points the table on disk calls done (0 when there is no table).
-std::size_t done_points(const fs::path& table) {
-  if (!fs::exists(table)) return 0;
-  const std::string t = test::read_text(table);
-  std::size_t done = 0;
-  for (auto at = t.find(",done,"); at != std::string::npos; at = t.find(",done,", at + 1)) ++done;
-  return done;
-}
+using test::done_points;
+using test::table_without_timing;
+using test::wait_for;
 
 TEST(SweepKill, TwentySigkillsAndResumesGiveTheUninterruptedTable) {
   test::TempDir dir;

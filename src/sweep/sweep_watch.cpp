@@ -1,0 +1,75 @@
+#include "sweep/sweep_watch.hpp"
+
+#include <fmt/format.h>
+
+#include <iostream>
+
+namespace dilatant::sweep {
+namespace {
+
+std::string duration_text(double seconds) {
+  const auto s = static_cast<long>(seconds + 0.5);
+  if (s < 60) return fmt::format("{}s", s);
+  if (s < 3600) return fmt::format("{}m{:02}s", s / 60, s % 60);
+  return fmt::format("{}h{:02}m", s / 3600, (s % 3600) / 60);
+}
+
+}  // namespace
+
+SweepWatch::SweepWatch(SweepWork& work, const SweepRunOptions& options)
+    : work_(work),
+      options_(options),
+      baseline_(work.plan().points.size(), -1.0),
+      start_(Clock::now()),
+      last_line_(Clock::now() - std::chrono::seconds(10)) {}
+
+void SweepWatch::tick(const SweepEvents& events) {
+  if (options_.stop != nullptr && options_.stop->load()) work_.halt();
+  std::vector<std::string> notes = events.notes;
+  if (events.table_changed) {
+    try {
+      work_.write_table();
+    } catch (const std::exception& e) {
+      notes.push_back(fmt::format("dilatant: cannot write flowcurves.csv: {}", e.what()));
+      work_.halt();
+    }
+  }
+  for (const auto& note : notes)
+    if (options_.report_failures || options_.show_progress)
+      std::cerr << (progress_shown_ ? "\r\033[K" : "") << note << "\n";
+  if (options_.show_progress && Clock::now() - last_line_ >= std::chrono::seconds(1)) {
+    std::cerr << "\r\033[K" << progress_line() << std::flush;
+    progress_shown_ = true;
+    last_line_ = Clock::now();
+  }
+}
+
+void SweepWatch::finish() {
+  if (progress_shown_) std::cerr << "\n";
+}
+
+// The time left is extrapolated from the strain the running points made since
+// this invocation started.
+std::string SweepWatch::progress_line() {
+  const std::vector<PointStatus> status = work_.statuses();
+  std::size_t done = 0, running = 0, failed = 0;
+  double progressed = 0.0, remaining = 0.0;
+  for (std::size_t i = 0; i < status.size(); ++i) {
+    const PointStatus s = status[i];
+    done += s == PointStatus::Done;
+    running += s == PointStatus::Running;
+    failed += s == PointStatus::Failed;
+    const double f = work_.fraction(i);
+    if (f >= 0.0 && baseline_[i] < 0.0) baseline_[i] = f;  // where this invocation took it up
+    if (baseline_[i] >= 0.0) progressed += std::max(0.0, f - baseline_[i]);
+    if (s == PointStatus::Pending || s == PointStatus::Running) remaining += 1.0 - std::max(0.0, f);
+  }
+  const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
+  const std::string left =
+      progressed > 0.0 ? "about " + duration_text(elapsed * remaining / progressed) : "unknown";
+  return fmt::format("sweep: {}/{} done, {} running, {} failed; {} elapsed, {} left", done,
+                     status.size(), running, failed, duration_text(elapsed),
+                     remaining > 0.0 ? left : "nothing");
+}
+
+}  // namespace dilatant::sweep

@@ -1,0 +1,334 @@
+#include "sweep/sweep_work.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <optional>
+#include <set>
+#include <sstream>
+
+#include "drivers/shear_cell_run.hpp"
+#include "io/atomic_file.hpp"
+
+namespace dilatant::sweep {
+namespace {
+
+constexpr const char* kColdStart = "cold-start";
+
+nlohmann::json read_summary(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return nlohmann::json::parse(text.str());  // throws on a corrupt file
+}
+
+// A message on one line.
+std::string one_line(std::string text) {
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  return text;
+}
+
+SweepPoint cold_point(const SweepPoint& p) {
+  SweepPoint cold = p;
+  cold.config = p.cold_start.value_or(p.config);
+  cold.continues_from.reset();
+  return cold;
+}
+
+}  // namespace
+
+SweepWork::SweepWork(const SweepPlan& plan, const SweepRunOptions& options)
+    : plan_(plan),
+      options_(options),
+      state_(plan.points.size(), PointState::Fresh),
+      records_(plan.points.size()),
+      fraction_(plan.points.size()),
+      halt_(options.stop != nullptr && options.stop->load()) {
+  for (auto& f : fraction_) f.store(-1.0);
+}
+
+std::size_t SweepWork::load_folders() {
+  const auto& out = options_.out;
+  // Every folder is compared before anything is written: a changed sweep is
+  // refused as a whole.
+  for (const auto& p : plan_.points) state_[p.index] = inspect_point_folder(p, out / p.folder);
+  std::filesystem::create_directories(out / "points");
+  write_file_atomically(out / "sweep.toml", resolved_sweep_toml(plan_));
+  std::size_t skipped = 0;
+  for (const auto& p : plan_.points)
+    if (state_[p.index] == PointState::Done) skipped += load_point(p.index);
+  write_table();
+  return skipped;
+}
+
+bool SweepWork::load_point(std::size_t i) {
+  const SweepPoint& p = plan_.points[i];
+  const auto folder = options_.out / p.folder;
+  state_[i] = inspect_point_folder(p, folder);
+  if (state_[i] != PointState::Done) return false;
+  nlohmann::json summary;
+  try {
+    summary = read_summary(folder / "summary.json");
+  } catch (const std::exception&) {
+    state_[i] = PointState::Fresh;  // an unreadable summary.json: run the point anew
+    return false;
+  }
+  {
+    std::lock_guard lock(mutex_);
+    records_[i].status = PointStatus::Done;
+    records_[i].summary = std::move(summary);
+  }
+  if (needs_confirmation(i) &&
+      inspect_point_folder(cold_point(p), folder / kColdStart) == PointState::Done) {
+    try {
+      auto cold = read_summary(folder / kColdStart / "summary.json");
+      std::lock_guard lock(mutex_);
+      records_[i].cold_start = std::move(cold);
+    } catch (const std::exception&) {
+      // unreadable: the confirmation runs again
+    }
+  }
+  return true;
+}
+
+std::vector<WorkUnit> SweepWork::work_units() const {
+  std::vector<WorkUnit> units;
+  std::vector<std::optional<std::size_t>> next(plan_.points.size());
+  for (const auto& p : plan_.points)
+    if (p.continues_from) next[*p.continues_from] = p.index;
+  for (const auto& p : plan_.points) {
+    if (p.continues_from) continue;  // runs in its chain
+    WorkUnit unit;
+    for (std::optional<std::size_t> i = p.index; i; i = next[*i])
+      if (state_[*i] != PointState::Done || needs_confirmation(*i)) unit.push_back(*i);
+    if (!unit.empty()) units.push_back(std::move(unit));
+  }
+  return units;
+}
+
+void SweepWork::run_unit(const WorkUnit& unit, bool inspect_first) {
+  if (inspect_first) {
+    // The unit's points and those they continue from, back to the chain's
+    // cold start: no other rank touches them while this one holds the chain.
+    std::set<std::size_t> chain;
+    for (std::size_t i : unit)
+      for (std::optional<std::size_t> k = i; k; k = plan_.points[*k].continues_from)
+        chain.insert(*k);
+    try {
+      for (std::size_t i : chain) load_point(i);  // in index order: predecessors first
+    } catch (const std::exception& e) {
+      // Rank 0 compared these folders before handing the unit out: only a
+      // folder changed meanwhile, or one this rank cannot read, gets here.
+      for (std::size_t i : unit) finish(i, PointStatus::Failed, one_line(e.what()));
+      return;
+    }
+  }
+  for (std::size_t i : unit) run_point(i);
+}
+
+// A continued point that jammed, whose cold start has not run yet.
+bool SweepWork::needs_confirmation(std::size_t i) const {
+  std::lock_guard lock(mutex_);
+  return plan_.settings.confirm_jams && plan_.points[i].continues_from && jammed(records_[i]) &&
+         !records_[i].cold_start.is_object();
+}
+
+// The jam of continued point i, run again from a new packing in its folder's
+// cold-start/ (resumable like a point): a ramp's jam is reported with whether
+// the same stress jams a cold start too.
+void SweepWork::confirm_jam(std::size_t i) {
+  const SweepPoint cold = cold_point(plan_.points[i]);
+  const auto folder = options_.out / plan_.points[i].folder / kColdStart;
+  const PointState state = inspect_point_folder(cold, folder);
+  try {
+    if (state != PointState::Done) {
+      CellRunOptions o;
+      o.run.out_dir = folder;
+      o.run.quiet = true;
+      o.resume = state == PointState::Resumable;
+      o.stop_requested = &halt_;
+      if (run_shear_cell(cold.config, o).interrupted) return;
+    }
+    auto summary = read_summary(folder / "summary.json");
+    std::lock_guard lock(mutex_);
+    records_[i].cold_start = std::move(summary);
+    changed(i, true);
+  } catch (const std::exception& e) {
+    std::lock_guard lock(mutex_);
+    events_.notes.push_back(
+        fmt::format("dilatant: the cold start confirming the jam of {} failed: {}",
+                    plan_.points[i].folder, one_line(e.what())));
+    changed_.notify_all();
+  }
+}
+
+void SweepWork::run_point(std::size_t i) {
+  if (halt_.load()) return;
+  const SweepPoint& p = plan_.points[i];
+  const auto folder = options_.out / p.folder;
+  if (state_[i] == PointState::Done) {  // in the unit for its jam's cold start only
+    confirm_jam(i);
+    return;
+  }
+  std::filesystem::path start_from;
+  if (p.continues_from) {
+    const SweepPoint& before = plan_.points[*p.continues_from];
+    const PointRecord previous = record(before.index);
+    if (previous.status == PointStatus::Skipped ||
+        (plan_.settings.stop_at_jam && jammed(previous))) {
+      finish(i, PointStatus::Skipped,
+             previous.status == PointStatus::Skipped
+                 ? previous.error
+                 : fmt::format("not run: the ramp jammed at {} (lambda {})", before.folder,
+                               before.config.fluid.lambda));
+      return;
+    }
+    if (previous.status != PointStatus::Done) {
+      if (previous.status == PointStatus::Failed)
+        finish(i, PointStatus::Failed,
+               fmt::format("not run: it continues from {}, which failed", before.folder));
+      return;  // the predecessor was interrupted: stays pending
+    }
+    start_from = options_.out / before.folder / "checkpoint.bin";
+  }
+  {
+    std::lock_guard lock(mutex_);
+    records_[i].status = PointStatus::Running;
+    changed(i, false);  // "running" is "pending" in the table: no rewrite
+  }
+  std::error_code ignored;
+  std::filesystem::remove(folder / "error.txt", ignored);
+  try {
+    CellRunOptions o;
+    o.run.out_dir = folder;
+    o.run.quiet = true;
+    o.resume = state_[i] == PointState::Resumable;
+    o.stop_requested = &halt_;
+    o.start_from = o.resume ? std::filesystem::path() : start_from;
+    o.progress = &fraction_[i];
+    CellOutcome outcome = run_shear_cell(p.config, o);
+    if (o.resume && !outcome.interrupted &&
+        !std::filesystem::is_regular_file(folder / "summary.json")) {
+      // The checkpoint is the final state of a run whose result files are
+      // gone (summary.json deleted to redo the point): run it anew.
+      o.resume = false;
+      o.start_from = start_from;
+      outcome = run_shear_cell(p.config, o);
+    }
+    if (outcome.interrupted) {
+      finish(i, PointStatus::Pending, "");
+      return;
+    }
+    if (!std::filesystem::is_regular_file(folder / "summary.json"))
+      throw std::runtime_error("the run ended without writing summary.json");
+    finish(i, PointStatus::Done, "", read_summary(folder / "summary.json"));
+  } catch (const std::exception& e) {
+    finish(i, PointStatus::Failed, one_line(e.what()));
+    return;
+  }
+  if (needs_confirmation(i)) confirm_jam(i);
+}
+
+void SweepWork::finish(std::size_t i, PointStatus status, const std::string& error,
+                       nlohmann::json summary) {
+  if (status == PointStatus::Failed) {
+    std::error_code ignored;
+    std::filesystem::create_directories(options_.out / plan_.points[i].folder, ignored);
+    try {
+      write_file_atomically(options_.out / plan_.points[i].folder / "error.txt", error + "\n");
+    } catch (const std::exception&) {
+      // the table still records it
+    }
+  }
+  std::lock_guard lock(mutex_);
+  records_[i].status = status;
+  records_[i].error = error;
+  records_[i].summary = std::move(summary);
+  if (status == PointStatus::Failed)
+    events_.notes.push_back(
+        fmt::format("dilatant: point {} failed: {}", plan_.points[i].folder, error));
+  changed(i, true);
+}
+
+void SweepWork::changed(std::size_t i, bool table_changed) {
+  events_.table_changed = events_.table_changed || table_changed;
+  events_.changed_points.push_back(i);
+  changed_.notify_all();
+}
+
+void SweepWork::worker_started() {
+  std::lock_guard lock(mutex_);
+  ++events_.active_workers;
+}
+
+void SweepWork::worker_ended() {
+  std::lock_guard lock(mutex_);
+  --events_.active_workers;
+  changed_.notify_all();
+}
+
+SweepEvents SweepWork::wait_for_events(std::chrono::milliseconds timeout) {
+  std::unique_lock lock(mutex_);
+  changed_.wait_for(lock, timeout);
+  SweepEvents out = std::move(events_);
+  events_ = SweepEvents{};
+  events_.active_workers = out.active_workers;
+  return out;
+}
+
+PointRecord SweepWork::record(std::size_t i) const {
+  std::lock_guard lock(mutex_);
+  return records_[i];
+}
+
+void SweepWork::set_record(std::size_t i, PointRecord record) {
+  std::lock_guard lock(mutex_);
+  records_[i] = std::move(record);
+  changed(i, records_[i].status != PointStatus::Running);
+}
+
+void SweepWork::add_note(std::string note) {
+  std::lock_guard lock(mutex_);
+  events_.notes.push_back(std::move(note));
+  changed_.notify_all();
+}
+
+std::vector<PointStatus> SweepWork::statuses() const {
+  std::vector<PointStatus> out;
+  std::lock_guard lock(mutex_);
+  for (const auto& r : records_) out.push_back(r.status);
+  return out;
+}
+
+std::vector<std::pair<std::size_t, double>> SweepWork::running_fractions() const {
+  std::vector<std::pair<std::size_t, double>> out;
+  std::lock_guard lock(mutex_);
+  for (std::size_t i = 0; i < records_.size(); ++i)
+    if (records_[i].status == PointStatus::Running) out.emplace_back(i, fraction_[i].load());
+  return out;
+}
+
+SweepOutcome SweepWork::outcome() const {
+  SweepOutcome outcome;
+  outcome.points = plan_.points.size();
+  std::lock_guard lock(mutex_);
+  for (const auto& r : records_) {
+    outcome.done += r.status == PointStatus::Done;
+    outcome.failed += r.status == PointStatus::Failed;
+    outcome.pending += r.status == PointStatus::Pending || r.status == PointStatus::Running;
+    outcome.above_jam += r.status == PointStatus::Skipped;
+  }
+  return outcome;
+}
+
+void SweepWork::write_table() const {
+  std::vector<PointRecord> records;
+  {
+    std::lock_guard lock(mutex_);
+    records = records_;
+  }
+  write_file_atomically(options_.out / "flowcurves.csv", flowcurves_csv(plan_, records));
+}
+
+}  // namespace dilatant::sweep
