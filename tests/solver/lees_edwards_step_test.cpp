@@ -106,7 +106,8 @@ TEST(LeesEdwardsStep, MomentumChangesOnlyByTheCrossingsImageVelocity) {
   }
   EXPECT_GE(crossings, 5);
   EXPECT_GE(contacts_across, 50);
-  EXPECT_NEAR((w.bodies.momentum() - expected).norm(), 0.0, 1e-9 * static_cast<double>(w.bodies.size()));
+  EXPECT_NEAR((w.bodies.momentum() - expected).norm(), 0.0,
+              1e-9 * static_cast<double>(w.bodies.size()));
 }
 
 }  // namespace
