@@ -63,15 +63,19 @@ SlabPartition partition_into_slabs(std::vector<Contact>& contacts, const World& 
   if (!world.box.periodic[kAxis] && !contacts.empty()) {
     e = contact_extent(contacts, world);
     const double length = e.high - e.low;
-    while (2 * slabs <= kMaxSlabs && length / (2 * slabs) >= 2.0 * e.reach) slabs *= 2;
+    // A flat (or non-finite) extent gives one slab: no width to cut.
+    if (std::isfinite(length) && length > 0.0)
+      while (2 * slabs <= kMaxSlabs && length / (2 * slabs) >= 2.0 * e.reach) slabs *= 2;
   }
   const double width = slabs > 1 ? (e.high - e.low) / slabs : 1.0;
   // Counting sort on key = 2 slab + touches_boundary: stable, O(contacts).
   const auto key = [&](const Contact& c) {
     int slab = 0;
     if (slabs > 1) {
-      slab =
-          std::min(slabs - 1, static_cast<int>((contact_point(c, world.bodies) - e.low) / width));
+      // Clamped as a double first: a contact point outside the extent (or not
+      // finite) must not overflow the cast.
+      const double at = (contact_point(c, world.bodies) - e.low) / width;
+      slab = std::isfinite(at) ? static_cast<int>(std::clamp(at, 0.0, double(slabs - 1))) : 0;
     }
     return 2 * slab + (touches_boundary(boundary_bodies, c) ? 1 : 0);
   };
