@@ -14,7 +14,8 @@
 # Environment: DILATANT_PAPER_OUT (default out/paper), DILATANT_PAPER_DOCS
 # (default docs/paper-reproduction), DILATANT_PAPER_SWEEPS (default
 # "fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi
-# dense-window-phi dst-map dst-map-mu0 dst-map-phi sc-scaling"),
+# dense-window-phi dst-map dst-map-mu0 dst-map-phi dst-map-dense dst-map-seeds
+# dst-size dst-map-films sc-scaling"),
 # DILATANT_SKIP_BUILD=1 to use build/ as it is.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -26,13 +27,20 @@ if [[ -z ${DILATANT_SKIP_BUILD:-} ]]; then
 fi
 status=0
 sweeps="fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi dense-window-phi
-dst-map dst-map-mu0 dst-map-phi sc-scaling"
+dst-map dst-map-mu0 dst-map-phi dst-map-dense dst-map-seeds dst-size dst-map-films sc-scaling"
 for sweep in ${DILATANT_PAPER_SWEEPS:-$sweeps}; do
   # A failed point does not stop the others (exit 1): copy what there is, go on.
   ./build/dilatant sweep "examples/paper/$sweep.toml" --out "$out/$sweep" "$@" || status=$?
   mkdir -p "$docs/$sweep"
   cp "$out/$sweep/flowcurves.csv" "$out/$sweep/sweep.toml" "$docs/$sweep/"
   if [[ -d $out/$sweep/analysis ]]; then cp "$out/$sweep/analysis/curves.csv" "$docs/$sweep/"; fi
+  # The jams' cold starts (sweep.confirm_jams): their summaries, one per jammed point.
+  for cold in "$out/$sweep"/points/*/cold-start/summary.json; do
+    [[ -f $cold ]] || continue
+    mkdir -p "$docs/$sweep/cold-starts"
+    point=$(basename "$(dirname "$(dirname "$cold")")")
+    cp "$cold" "$docs/$sweep/cold-starts/$point.json"
+  done
   # Fig. 1b-d come from fig2's mu0 0.1 curve; the other sweeps need their flow curves only.
   plots=(flow_curves)
   if [[ $sweep == fig2 ]]; then plots+=(fig1b_viscosity fig1c_sommerfeld fig1d_contacts); fi
@@ -49,10 +57,37 @@ fi
 if [[ -f $docs/dst-map/flowcurves.csv ]]; then
   # The map reads the tables of docs/jamming/ (scripts/docs-jamming.sh).
   maps=("$docs/dst-map")
-  for more in dst-map-mu0 dst-map-phi; do
+  # The literal model's ramps in the map's cell (dst-size's cell and
+  # dst-map-films's model differ: their tables are read in the text).
+  for more in dst-map-mu0 dst-map-phi dst-map-dense dst-map-seeds; do
     if [[ -f $docs/$more/flowcurves.csv ]]; then maps+=("$docs/$more"); fi
   done
   /usr/bin/python3 scripts/dst_map.py "$docs/dst-map" dst_map "${maps[@]}"
+fi
+if [[ " ${DILATANT_PAPER_SWEEPS:-$sweeps} " == *" sc-scaling "* && -f $docs/sc-scaling/flowcurves.csv ]]; then
+  # The s_c scaling's two ramps from saved states (docs/paper-reproduction.md
+  # "The onset's s_c scaling"): s_c 5e-6 carried on from its lambda 100 state,
+  # s_c 5e-4 started from the s_c 5e-5 flowing state at lambda 0.1.
+  ramp=examples/paper/sc-scaling-ramp.toml
+  for start in "$out"/sc-scaling/points/*-s_c=5e-06_lambda=100/checkpoint.bin; do
+    [[ -f $start ]] || continue
+    DILATANT=build/dilatant bash scripts/ramp_from_state.sh "$ramp" "$start" "$out/sc-scaling-5e-6" \
+      --set friction.s_c=5e-6 300.0 1000.0 3000.0 || status=$?
+    mkdir -p "$docs/sc-scaling-5e-6"
+    for point in "$out"/sc-scaling-5e-6/lambda=*; do
+      if [[ -f $point/summary.json ]]; then
+        cp "$point/summary.json" "$docs/sc-scaling-5e-6/summary-$(basename "$point" | tr = -).json"
+      fi
+    done
+  done
+  for start in "$out"/sc-scaling/points/*-s_c=5e-05_lambda=0.1/checkpoint.bin; do
+    [[ -f $start ]] || continue
+    DILATANT=build/dilatant bash scripts/ramp_from_state.sh "$ramp" "$start" "$out/sc-scaling-ramp" \
+      0.1 || status=$?
+    mkdir -p "$docs/sc-scaling-ramp"
+    cp "$out/sc-scaling-ramp/lambda=0.1"/{summary.json,timeseries.csv} "$docs/sc-scaling-ramp/" || status=$?
+  done
+  /usr/bin/python3 scripts/sc_scaling.py "$docs"
 fi
 /usr/bin/python3 scripts/paper_tables.py "$docs" >"$docs/tables.md.part"
 mv "$docs/tables.md.part" "$docs/tables.md"
