@@ -13,6 +13,7 @@ packages=(
   python3-dev python3-pybind11 python3-pytest      # the Python module and its tests
   openmpi-bin libopenmpi-dev                        # MPI sweeps (docs/cluster.md)
   clang-format                                      # formatting check (scripts/test.sh)
+  clang libclang-rt-dev                             # libFuzzer targets (scripts/fuzz.sh)
 )
 packages+=("$@")
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Everything CI checks, in order: dependencies, release build + tests, sanitizer
-# build + tests, formatting. Later stages still run after a failure so one run
+# build + tests, fuzzing (30 s a reader), formatting. Later stages still run after a failure so one run
 # shows every problem; the exit status is non-zero if any stage failed.
 #   scripts/test.sh            (DILATANT_SKIP_DEPS=1 skips the apt step)
 set -euo pipefail
@@ -41,8 +41,12 @@ if stage "sanitize build" bash scripts/build.sh sanitize; then
     -j "$jobs" -E 'shear_cell_convergence|shear_cell_viscous' || true
 fi
 
+# The readers of user input under libFuzzer (clang, ASan + UBSan), 30 s each
+# from the committed seeds (docs/reliability.md "Fuzzing").
+stage "fuzz" bash scripts/fuzz.sh 30 || true
+
 format_check() {
-  find src tests bench python/src -type f \( -name '*.cpp' -o -name '*.hpp' -o -name '*.h' \) -print0 |
+  find src tests bench fuzz python/src -type f \( -name '*.cpp' -o -name '*.hpp' -o -name '*.h' \) -print0 |
     xargs -0 --no-run-if-empty clang-format --dry-run --Werror
 }
 stage "clang-format" format_check || true

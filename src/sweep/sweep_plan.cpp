@@ -218,7 +218,10 @@ Position position(const toml::node& n, const std::string& source, std::size_t di
 
 SweepSettings read_settings(const toml::table& t, const std::string& source) {
   SweepSettings s;
-  for (const auto& [key, node] : t) {
+  for (const auto& [key, value] : t) {
+    // A reference, not the structured binding, for the lambda to capture (a
+    // binding captured by a lambda is C++20 that clang 14 lacks: scripts/fuzz.sh).
+    const toml::node& node = value;
     const std::string name = fmt::format("sweep.{}", key.str());
     const auto fail = [&](std::string_view what) {
       throw InputError(

@@ -58,11 +58,15 @@ struct RunResult {
 class CliDir : public TempDir {
  public:
   // Runs the dilatant executable with `args`; stdout and stderr are captured.
-  // `shell_setup` runs in the same shell first (e.g. limits: "ulimit -f 8;").
-  RunResult run(const std::vector<std::string>& args, const std::string& shell_setup = "") const {
+  // `shell_setup` runs in the same shell first (e.g. limits: "ulimit -f 8;");
+  // `launcher` goes in front of the executable (e.g. "setpriv ... --"), and
+  // `executable` replaces DILATANT_EXECUTABLE.
+  RunResult run(const std::vector<std::string>& args, const std::string& shell_setup = "",
+                const std::string& launcher = "",
+                const std::string& executable = DILATANT_EXECUTABLE) const {
     const std::filesystem::path out = path() / "stdout.txt";
     const std::filesystem::path err = path() / "stderr.txt";
-    std::string command = shell_setup + " exec " + shell_quote(DILATANT_EXECUTABLE);
+    std::string command = shell_setup + " exec " + launcher + " " + shell_quote(executable);
     for (const auto& a : args) command.append(" ").append(shell_quote(a));
     command.append(" >").append(shell_quote(out.string()));
     command.append(" 2>").append(shell_quote(err.string()));

@@ -1,0 +1,88 @@
+#include "fuzz_targets.hpp"
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+#include "analysis/flow_curve_csv.hpp"
+#include "drivers/shear_cell_state.hpp"
+#include "io/config.hpp"
+#include "io/input_error.hpp"
+#include "io/particles_csv.hpp"
+
+namespace dilatant::fuzz {
+
+namespace {
+
+std::string_view text_of(const std::uint8_t* data, std::size_t size) {
+  return {reinterpret_cast<const char*>(data), size};
+}
+
+// The file readers take a path: the bytes go to a file of this process's own
+// (libFuzzer runs one input at a time per process), removed afterwards.
+struct InputFile {
+  std::filesystem::path path;
+  InputFile(const std::uint8_t* data, std::size_t size, const char* name)
+      : path(std::filesystem::temp_directory_path() /
+             ("dilatant-fuzz-" + std::to_string(::getpid()) + "-" + name)) {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+    if (!out) throw std::logic_error("fuzz harness: cannot write " + path.string());
+  }
+  InputFile(const InputFile&) = delete;
+  InputFile& operator=(const InputFile&) = delete;
+  ~InputFile() {
+    std::error_code ignored;
+    std::filesystem::remove(path, ignored);
+  }
+};
+
+}  // namespace
+
+void config(const std::uint8_t* data, std::size_t size) {
+  try {
+    (void)parse_config(text_of(data, size), "fuzz.toml", std::filesystem::path("."), {});
+  } catch (const InputError&) {
+  }
+}
+
+void particles_csv(const std::uint8_t* data, std::size_t size) {
+  const InputFile file(data, size, "particles.csv");
+  try {
+    (void)read_particles_csv(file.path);
+  } catch (const InputError&) {
+  }
+}
+
+void checkpoint(const std::uint8_t* data, std::size_t size) {
+  const std::string name = "fuzz-checkpoint.bin";
+  try {
+    (void)read_checkpoint(std::string(text_of(data, size)), name);
+  } catch (const std::runtime_error& e) {
+    // load_checkpoint() names the file in front of the archive's own messages;
+    // read_checkpoint()'s must name it or be one of those.
+    const std::string what = e.what();
+    if (what.rfind(name, 0) != 0 && what.rfind("checkpoint is", 0) != 0) throw;
+  }
+}
+
+void rheometer_file(const std::uint8_t* data, std::size_t size) {
+  const InputFile file(data, size, "flow-curve.csv");
+  try {
+    (void)analysis::read_flow_curve_file(file.path);
+  } catch (const InputError&) {
+  }
+}
+
+Target target_named(std::string_view name) {
+  if (name == "config") return &config;
+  if (name == "particles_csv") return &particles_csv;
+  if (name == "checkpoint") return &checkpoint;
+  if (name == "rheometer_file") return &rheometer_file;
+  return nullptr;
+}
+
+}  // namespace dilatant::fuzz
