@@ -35,7 +35,7 @@ for target in "${targets[@]}"; do
   cp -n fuzz/corpus/"$target"/* "$corpus"/ 2>/dev/null || true
   log=$dir/$target.log
   echo "=== fuzz.sh: $target for $seconds s"
-  if ! "$dir/${target}_fuzzer" "$corpus" -max_total_time="$seconds" -timeout=10 \
+  if ! "$dir/fuzz/${target}_fuzzer" "$corpus" -max_total_time="$seconds" -timeout=10 \
     -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$artifacts/" >"$log" 2>&1; then
     status=1
     echo "=== fuzz.sh: $target FAILED; its input is in $artifacts/, the report in $log" >&2

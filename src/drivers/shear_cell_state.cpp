@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -32,7 +33,7 @@ void visit_state(Archive& a, State& s) {
   a.vector(b.id);
   a.vector(s.walls.groups());
   std::uint64_t planes = s.world.planes.size();
-  a.value(planes);
+  a.count(planes, 2 * sizeof(Vec3));
   s.world.planes.resize(planes);
   for (auto& plane : s.world.planes) {
     a.value(plane.point);
@@ -109,6 +110,33 @@ ShearCellState load_checkpoint(const std::filesystem::path& file) {
   }
 }
 
+namespace {
+
+// A state that read without error can still be one no run wrote (a damaged
+// file of the right length): arrays of different lengths or indices out of
+// range would be read out of bounds by the first step. Refused here, named.
+void check_consistent(const ShearCellState& s, const std::filesystem::path& file) {
+  const Bodies& b = s.world.bodies;
+  const std::size_t n = b.position.size();
+  const auto fail = [&](const char* what) {
+    throw std::runtime_error(fmt::format("{}: corrupt checkpoint ({})", file.string(), what));
+  };
+  if (b.velocity.size() != n || b.angular_velocity.size() != n || b.radius.size() != n ||
+      b.inv_mass.size() != n || b.inv_inertia.size() != n || b.id.size() != n)
+    fail("body arrays of different lengths");
+  if (!s.walls.groups().empty() && s.walls.groups().size() != n) fail("body groups");
+  for (const std::int32_t i : s.walls.top().spheres)
+    if (i < 0 || static_cast<std::size_t>(i) >= n) fail("wall sphere index");
+  if (s.geometry.first_mobile > n || s.geometry.mobile_count > n - s.geometry.first_mobile)
+    fail("mobile range");
+  for (int k = 0; k < 3; ++k)
+    if (!std::isfinite(s.world.box.length[k]) || s.world.box.length[k] < 0.0 ||
+        (s.world.box.periodic[k] && s.world.box.length[k] == 0.0))
+      fail("box");
+}
+
+}  // namespace
+
 ShearCellState read_checkpoint(std::string bytes, const std::filesystem::path& file) {
   BinaryReader r(std::move(bytes));
   std::uint64_t magic = 0;
@@ -139,6 +167,7 @@ ShearCellState read_checkpoint(std::string bytes, const std::filesystem::path& f
     s.contact_memory.emplace(key, m);
   }
   if (!r.at_end()) throw std::runtime_error(file.string() + ": checkpoint has trailing data");
+  check_consistent(s, file);
   return s;
 }
 

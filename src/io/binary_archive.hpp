@@ -3,6 +3,7 @@
 // values and vectors, with a magic header. Checkpoints are read back by the
 // same build on the same machine, so no endianness or versioning beyond the
 // magic string is attempted.
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
@@ -23,6 +24,8 @@ class BinaryWriter {
     bytes_.insert(bytes_.end(), p, p + sizeof(T));
   }
   void value(const Vec3& v) { value(v[0]), value(v[1]), value(v[2]); }
+  // The number of elements that follow, each at least `bytes_each` long.
+  void count(const std::uint64_t& n, std::size_t /*bytes_each*/) { value(n); }
   template <class T>
   void vector(const std::vector<T>& v) {
     value(static_cast<std::uint64_t>(v.size()));
@@ -45,11 +48,29 @@ class BinaryReader {
     pos_ += sizeof(T);
   }
   void value(Vec3& v) { value(v[0]), value(v[1]), value(v[2]); }
+  // A bool is one byte, 0 or 1: any other byte would be undefined behaviour
+  // once loaded as a bool (UBSan under fuzzing), so it is refused here.
+  void value(bool& v) {
+    std::uint8_t byte = 0;
+    value(byte);
+    if (byte > 1) throw std::runtime_error("checkpoint is corrupt");
+    v = byte == 1;
+  }
+  template <std::size_t N>
+  void value(std::array<bool, N>& v) {
+    for (bool& x : v) value(x);
+  }
+  // A count read from the file is checked against the bytes left before
+  // anything is allocated for it: a damaged count must be refused, not
+  // allocated (fuzzing found a plane count of 2^44).
+  void count(std::uint64_t& n, std::size_t bytes_each) {
+    value(n);
+    if (n > (bytes_.size() - pos_) / bytes_each) throw std::runtime_error("checkpoint is corrupt");
+  }
   template <class T>
   void vector(std::vector<T>& v) {
     std::uint64_t n = 0;
-    value(n);
-    if (n > bytes_.size()) throw std::runtime_error("checkpoint is corrupt");
+    count(n, sizeof(T));
     v.resize(n);
     for (T& x : v) value(x);
   }
