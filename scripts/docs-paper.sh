@@ -57,10 +57,13 @@ fi
 if [[ -f $docs/dst-map/flowcurves.csv ]]; then
   # The map reads the tables of docs/jamming/ (scripts/docs-jamming.sh).
   maps=("$docs/dst-map")
-  # The literal model's ramps in the map's cell (dst-size's cell and
-  # dst-map-films's model differ: their tables are read in the text).
+  # The literal model's ramps in the map's cell, and in the paper's cell
+  # (dst-map-films's model differs: its table is read in the text).
   for more in dst-map-mu0 dst-map-phi dst-map-dense dst-map-seeds; do
     if [[ -f $docs/$more/flowcurves.csv ]]; then maps+=("$docs/$more"); fi
+  done
+  for more in dst-size dst-size-phi; do  # the paper's cell: open markers
+    if [[ -f $docs/$more/flowcurves.csv ]]; then maps+=("$docs/$more=25x10x27"); fi
   done
   /usr/bin/python3 scripts/dst_map.py "$docs/dst-map" dst_map "${maps[@]}"
 fi

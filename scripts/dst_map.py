@@ -3,7 +3,9 @@ a `dilatant sweep` with continuation placed at its (mu0, phi_bulk) and marked
 by what it did, over the jamming fractions of docs/jamming.md (the paper's
 Fig. 4 with simulations on it).
 
-  dst_map.py DOCS NAME SWEEP [SWEEP ...]
+  dst_map.py DOCS NAME SWEEP[=CELL] [SWEEP[=CELL] ...]
+    CELL labels a sweep run in another cell than the map's (e.g.
+    dst-size=25x10x27): its ramps are drawn as large open markers.
     reads  SWEEP/flowcurves.csv           the ramps (examples/paper/dst-map.toml,
                                           dst-map-mu0.toml)
            data/jamming/phi_max_bl.csv    the sediment phi_max_BL(mu0)
@@ -35,9 +37,9 @@ MARKERS = {"dst": ("v", "tab:red"), "dst?": ("v", "tab:orange"), "jammed": ("x",
 def ramps(rows):
     groups = defaultdict(list)
     for r in rows:
-        groups[(float(r["mu0"]), float(r["phi"]), r["sample"])].append(r)
+        groups[(r.get("cell", ""), float(r["mu0"]), float(r["phi"]), r["sample"])].append(r)
     out = []
-    for (mu0, phi, sample), points in sorted(groups.items()):
+    for (cell, mu0, phi, sample), points in sorted(groups.items()):
         points.sort(key=lambda r: float(r["lambda"]))
         done = [r for r in points if r["status"] == "done"]
         flowing = [r for r in done if r["jammed"] == "false"]
@@ -53,7 +55,7 @@ def ramps(rows):
             outcome = "flows"
         source = flowing or jams
         out.append({
-            "mu0": mu0, "phi": phi, "sample": sample,
+            "mu0": mu0, "phi": phi, "sample": sample, "cell": cell,
             "phi_bulk": (sum(float(r["phi_bulk"]) for r in source) / len(source)
                          if source else None),
             "outcome": outcome,
@@ -96,14 +98,21 @@ def draw(entries, docs, name):
                         color="tab:green", lw=4, alpha=0.35)
         ax.plot([], [], color="tab:green", lw=4, alpha=0.35, label="dry shear jamming bracket")
     for outcome, (marker, colour) in MARKERS.items():
-        chosen = [e for e in entries if e["outcome"] == outcome and e["phi_bulk"] is not None]
-        if chosen:
+        for cell in sorted({e["cell"] for e in entries}):
+            chosen = [e for e in entries if e["outcome"] == outcome and e["cell"] == cell
+                      and e["phi_bulk"] is not None]
+            if not chosen:
+                continue
+            style = (dict(s=40, color=colour) if not cell else
+                     dict(s=110, facecolors="none", edgecolors=colour, linewidths=1.5))
             ax.scatter([e["mu0"] for e in chosen], [e["phi_bulk"] for e in chosen], marker=marker,
-                       color=colour, s=40, zorder=3, label=f"ramp: {outcome}")
+                       zorder=3, label=f"ramp: {outcome}" + (f" ({cell} cell)" if cell else ""),
+                       **style)
     ax.set_xlabel(r"boundary friction $\mu_0$")
     ax.set_ylabel(r"$\phi_{bulk}$")
     ax.set_ylim(0.54, 0.645)
-    ax.set_title("stress ramps to the jam over phi_max_BL(mu0)", fontsize=9)
+    ax.set_title("stress ramps to the jam over phi_max_BL(mu0); filled: 12 x 8 x 14 R cell",
+                 fontsize=9)
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fig.tight_layout()
     save(fig, docs, name)
@@ -114,14 +123,16 @@ def main(argv):
         sys.exit(__doc__)
     docs, name = Path(argv[1]), argv[2]
     rows = []
-    for sweep in argv[3:]:
-        rows += read_rows(Path(sweep) / "flowcurves.csv")
+    for arg in argv[3:]:
+        sweep, _, cell = arg.partition("=")
+        rows += [dict(r, cell=cell) for r in read_rows(Path(sweep) / "flowcurves.csv")]
     entries = ramps(rows)
     docs.mkdir(parents=True, exist_ok=True)
     write_table(entries, docs / f"{name}.csv")
     draw(entries, docs, name)
     for e in entries:
-        print(f"mu0 {e['mu0']} phi {e['phi']}: phi_bulk {e['phi_bulk']}, {e['outcome']}"
+        print(f"mu0 {e['mu0']} phi {e['phi']}{' (' + e['cell'] + ')' if e['cell'] else ''}: "
+              f"phi_bulk {e['phi_bulk']}, {e['outcome']}"
               f"{' at lambda ' + e['jam_lambda'] if e['jam_lambda'] else ''}")
 
 
