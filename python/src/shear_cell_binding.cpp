@@ -121,7 +121,7 @@ void bind_shear_cell(py::module_& m) {
       .def_property_readonly("dt", [](const ShearCell& c) { return c.state().dt; })
       .def_property_readonly("jammed", [](const ShearCell& c) { return c.state().jammed; })
       .def_property_readonly("wall_velocity",
-                             [](const ShearCell& c) { return c.state().walls.top().velocity; })
+                             [](const ShearCell& c) { return c.state().boundary_velocity(); })
       .def_property_readonly("config", &ShearCell::config)
       .def_property_readonly(
           "positions", [](const ShearCell& c) { return vectors(c.state().world.bodies.position); })
