@@ -12,11 +12,13 @@
 // Control:
 //   rate    V = gamma_dot Lz, fixed.
 //   stress  V follows the stress the flow transmits, with a fictitious inertia
-//           M (the stress-controlled Lees–Edwards cell of Chialvo, Sun &
-//           Sundaresan, Phys. Rev. E 85, 021305 (2012), whose feedback moves
-//           the strain rate by the difference between the applied and the
-//           measured shear stress; here written as the equation of motion of
-//           the wall it replaces, so that M has the wall's meaning):
+//           M: the form of Parrinello & Rahman's coupling of a box degree of
+//           freedom to the stress (J. Appl. Phys. 52, 7182 (1981): a
+//           fictitious mass driven by the imposed minus the measured stress),
+//           as used for the pressure under Lees–Edwards shear by Chialvo, Sun
+//           & Sundaresan, Phys. Rev. E 85, 021305 (2012); here it acts on the
+//           shear stress and V, written as the equation of motion of the wall
+//           it replaces, so that M has the wall's meaning:
 //
 //               M dV/dt = A (tau - sigma_zx),     A = Lx Ly,
 //

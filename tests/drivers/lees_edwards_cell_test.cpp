@@ -150,54 +150,86 @@ TEST(LeesEdwardsCell, MomentumChangesOnlyByTheCrossingsImageVelocity) {
   EXPECT_GT(speed * std::abs(shift), 1e-6 * scale);
 }
 
-// The squeeze film across the boundary (fluid/squeeze_film.hpp): a pair
-// approaching through z is the pair inside the box, seen from the partner's
-// image, with the images' velocity offset; its film impulse and the velocities
-// it leaves agree to round-off.
-TEST(LeesEdwardsCell, ASqueezeFilmThroughTheBoundaryActsAsInsideTheBox) {
-  const double offset = 2.1, speed = 1.3, dt = 1e-3;
-  const auto box = [&] {
-    World w;
-    w.box.length = Vec3(8.0, 6.0, 9.0);
-    w.box.periodic = {true, true, true};
-    w.box.lees_edwards = true;
-    w.box.shear_offset = offset;
-    w.box.shear_velocity = speed;
-    return w;
-  };
-  // A gap of 0.05 R closing at ~1 R per unit time: the film acts, no contact.
-  const Vec3 x0(4.0, 3.0, 4.0), v0(0.3, 0.0, 0.5), v1(-0.2, 0.1, -0.5);
-  const Vec3 x1 = x0 + 2.05 * Vec3(0.1, 0.05, 1.0).normalized();
-  World inside = box();
-  inside.bodies.add_sphere(0, x0, 1.0, 1.0, false, v0);
-  inside.bodies.add_sphere(1, x1, 1.0, 1.0, false, v1);
-  const Vec3 up(0.0, 0.0, 4.6);
-  World across = box();
-  across.bodies.add_sphere(0, x0 + up, 1.0, 1.0, false, v0);
-  Vec3 y1 = x1 + up, w1 = v1;
-  across.box.wrap_body(y1, w1);
-  ASSERT_LT(y1[2], 2.0);  // stored at the bottom, across the boundary
-  across.bodies.add_sphere(1, y1, 1.0, 1.0, false, w1);
+// A pair once inside the box and once through its top: sphere 1 moved up by
+// `up` lies beyond z = Lz and is stored at the bottom, x shifted back by the
+// offset and v_x by the images' speed (wrap_body).
+struct PairAcross {
+  World inside, across;
+  double speed = 1.3;
+};
 
+PairAcross pair_across(const Vec3& x0, const Vec3& v0, const Vec3& x1, const Vec3& v1) {
+  PairAcross p;
+  for (World* w : {&p.inside, &p.across}) {
+    w->box.length = Vec3(8.0, 6.0, 9.0);
+    w->box.periodic = {true, true, true};
+    w->box.lees_edwards = true;
+    w->box.shear_offset = 2.1;
+    w->box.shear_velocity = p.speed;
+  }
+  p.inside.bodies.add_sphere(0, x0, 1.0, 1.0, false, v0);
+  p.inside.bodies.add_sphere(1, x1, 1.0, 1.0, false, v1);
+  const Vec3 up(0.0, 0.0, 4.6);
+  p.across.bodies.add_sphere(0, x0 + up, 1.0, 1.0, false, v0);
+  Vec3 y1 = x1 + up, w1 = v1;
+  p.across.box.wrap_body(y1, w1);
+  EXPECT_LT(y1[2], 2.0);  // stored at the bottom, across the boundary
+  p.across.bodies.add_sphere(1, y1, 1.0, 1.0, false, w1);
+  return p;
+}
+
+// After one step of each: the same impulse, and the same velocities seen
+// from the same copy (sphere 1 plus the images' speed). Returns the contact
+// inside the box.
+Contact expect_same_step(PairAcross& p, const FrictionLaw& law, SuspendingFluid* fluid) {
+  const SolverSettings settings{.tolerance = 1e-12, .max_iterations = 10000};
+  TimeStepper a(law, settings, 1e-3), b(law, settings, 1e-3);
+  a.set_fluid_forces(fluid);
+  b.set_fluid_forces(fluid);
+  a.step(p.inside);
+  b.step(p.across);
+  EXPECT_EQ(a.contacts().size(), 1u);
+  EXPECT_EQ(b.contacts().size(), 1u);
+  if (a.contacts().size() != 1u || b.contacts().size() != 1u) return Contact{};
+  const Contact &ca = a.contacts()[0], &cb = b.contacts()[0];
+  const double scale = ca.p_n + ca.p_lub + ca.p_t.norm();
+  EXPECT_NEAR(cb.p_n, ca.p_n, 1e-10 * scale);
+  EXPECT_NEAR(cb.p_lub, ca.p_lub, 1e-10 * scale);
+  EXPECT_NEAR((cb.p_t - ca.p_t).norm(), 0.0, 1e-10 * scale);
+  const Bodies &in = p.inside.bodies, &ac = p.across.bodies;
+  EXPECT_NEAR((ac.velocity[0] - in.velocity[0]).norm(), 0.0, 1e-10);
+  EXPECT_NEAR((ac.velocity[1] + Vec3(p.speed, 0.0, 0.0) - in.velocity[1]).norm(), 0.0, 1e-10);
+  EXPECT_NEAR((ac.angular_velocity[1] - in.angular_velocity[1]).norm(), 0.0, 1e-10);
+  return ca;
+}
+
+// The squeeze film across the boundary (fluid/squeeze_film.hpp): a gap of
+// 0.05 R closing at ~1 R per unit time, the film acts and no contact closes.
+TEST(LeesEdwardsCell, ASqueezeFilmThroughTheBoundaryActsAsInsideTheBox) {
+  const Vec3 x0(4.0, 3.0, 4.0);
+  PairAcross p = pair_across(x0, Vec3(0.3, 0.0, 0.5), x0 + 2.05 * Vec3(0.1, 0.05, 1.0).normalized(),
+                             Vec3(-0.2, 0.1, -0.5));
   FluidConfig fluid;
   fluid.lubrication = LubricationKind::Normal;
   const auto film = make_fluid(fluid, 0.5);
-  const CoulombLaw law{.mu0 = 0.4, .eta_f = 0.5};
-  const SolverSettings settings{.tolerance = 1e-12, .max_iterations = 10000};
-  TimeStepper a(law, settings, dt), b(law, settings, dt);
-  a.set_fluid_forces(film.get());
-  b.set_fluid_forces(film.get());
-  a.step(inside);
-  b.step(across);
-  ASSERT_EQ(a.contacts().size(), 1u);
-  ASSERT_EQ(b.contacts().size(), 1u);
-  const Contact &ca = a.contacts()[0], &cb = b.contacts()[0];
-  ASSERT_GT(ca.p_lub, 0.0);  // the film resists the approach
-  EXPECT_NEAR(cb.p_lub, ca.p_lub, 1e-10 * ca.p_lub);
-  EXPECT_NEAR((across.bodies.velocity[0] - inside.bodies.velocity[0]).norm(), 0.0, 1e-10);
-  EXPECT_NEAR(
-      (across.bodies.velocity[1] + Vec3(speed, 0.0, 0.0) - inside.bodies.velocity[1]).norm(), 0.0,
-      1e-10);
+  const Contact c = expect_same_step(p, CoulombLaw{.mu0 = 0.4, .eta_f = 0.5}, film.get());
+  EXPECT_GT(c.p_lub, 0.0);  // the film resists the approach
+  EXPECT_EQ(c.p_n, 0.0);    // and no contact closes
+}
+
+// A contact through the boundary under the cell's own law, the Stribeck
+// friction of the paper (friction/stribeck_law.hpp), whose Sommerfeld number
+// reads the sliding speed: with the images' offset in the relative velocity,
+// the impulse is the one inside the box (a sliding speed seen without the
+// offset would differ by V = 1.3 and change the friction).
+TEST(LeesEdwardsCell, AStribeckContactThroughTheBoundaryActsAsInsideTheBox) {
+  const Vec3 x0(4.0, 3.0, 4.0);
+  PairAcross p =
+      pair_across(x0, Vec3(0.3, 0.0, 0.9), x0 + Vec3(0.3, 0.2, 1.95), Vec3(-0.2, 0.1, -0.8));
+  const FrictionLaw law = make_friction_law(FrictionConfig{}, 0.1);
+  const Contact c = expect_same_step(p, law, nullptr);
+  EXPECT_GT(c.p_n, 0.0);
+  EXPECT_GT(c.p_t.norm(), 0.0);  // friction acts
 }
 
 // Continuation checks the boundary as well as the size: a wall cell's state
