@@ -77,10 +77,14 @@ std::string ShearCell::progress_line(double elapsed) const {
     state = fmt::format("not yet steady: wall speed {:+.0f}% +- {:.0f}%", 100.0 * d.change,
                         100.0 * d.error);
   }
+  // The stress: applied, or under rate control the last row's measured one.
+  const bool rate = config_.cell()->control == ShearControl::Rate;
+  const double tau = !rate            ? config_.cell()->shear_stress
+                     : s.rows.empty() ? 0.0
+                                      : invariants(s.rows.back().stress).shear;
   return fmt::format("strain {:6.2f}/{:.2f}  gamma_dot {:9.3g}  eta {:9.3g}  left {:5.0f} s  {}",
                      s.strain, config_.run.strain, gdot / units_.rate_unit,
-                     relative_viscosity(config_.cell()->shear_stress, gdot, units_.eta_f), left,
-                     state);
+                     relative_viscosity(tau, gdot, units_.eta_f), left, state);
 }
 
 }  // namespace dilatant
