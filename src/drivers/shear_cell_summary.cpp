@@ -151,7 +151,9 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   } else {
     // No row after the transient (a jam stops the wall before it): the packing
     // the run ends in still has a bulk fraction, from its final state.
-    j["phi_bulk"] = slab_volume_fraction(s.world, s.walls.body_groups(), 0.25 * lz, 0.75 * lz);
+    // (Lees–Edwards: the box's exact fraction, as every row has.)
+    j["phi_bulk"] = le ? s.geometry.phi_box
+                       : slab_volume_fraction(s.world, s.walls.body_groups(), 0.25 * lz, 0.75 * lz);
     j["phi_bulk_err"] = nullptr;
   }
   j["mobile_spheres"] = s.geometry.mobile_count;
