@@ -34,11 +34,12 @@ fi
 export ASAN_OPTIONS=halt_on_error=1:abort_on_error=1:detect_leaks=1
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 if stage "sanitize build" bash scripts/build.sh sanitize; then
-  # The seed-averaged suites (shear_cell_convergence, shear_cell_viscous) run the
+  # The seed-averaged suites (shear_cell_convergence, shear_cell_viscous,
+  # shear_cell_lees_edwards_mass) run the
   # same code as the short cell tests, only longer; under the sanitizers they
   # would take ~10x their 1-2 minutes for no new coverage: Release only.
   stage "sanitize tests" ctest --test-dir build-sanitize --output-on-failure --no-tests=error \
-    -j "$jobs" -E 'shear_cell_convergence|shear_cell_viscous' || true
+    -j "$jobs" -E 'shear_cell_convergence|shear_cell_viscous|shear_cell_lees_edwards_mass' || true
 fi
 
 # The readers of user input under libFuzzer (clang, ASan + UBSan), 30 s each

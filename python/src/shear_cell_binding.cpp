@@ -121,7 +121,7 @@ void bind_shear_cell(py::module_& m) {
       .def_property_readonly("dt", [](const ShearCell& c) { return c.state().dt; })
       .def_property_readonly("jammed", [](const ShearCell& c) { return c.state().jammed; })
       .def_property_readonly("wall_velocity",
-                             [](const ShearCell& c) { return c.state().walls.top().velocity; })
+                             [](const ShearCell& c) { return c.state().boundary_velocity(); })
       .def_property_readonly("config", &ShearCell::config)
       .def_property_readonly(
           "positions", [](const ShearCell& c) { return vectors(c.state().world.bodies.position); })
@@ -137,8 +137,11 @@ void bind_shear_cell(py::module_& m) {
       .def_property_readonly(
           "groups",
           [](const ShearCell& c) {
-            std::vector<std::uint8_t> g;
-            for (BodyGroup b : c.state().walls.groups()) g.push_back(static_cast<std::uint8_t>(b));
+            // Without walls (Lees–Edwards) the list is empty: every body is a particle.
+            std::vector<std::uint8_t> g(c.state().world.bodies.size(), 0);
+            const auto& groups = c.state().walls.groups();
+            for (std::size_t i = 0; i < groups.size(); ++i)
+              g[i] = static_cast<std::uint8_t>(groups[i]);
             return values(g);
           },
           "Per body: 0 mobile particle, 1 bottom wall, 2 top wall")

@@ -118,3 +118,24 @@ def test_resumed_cell_continues_exactly(cli, tiny_file, tmp_path):
     resumed.finish()
     resumed.write_results(tmp_path / "py")
     assert_same_files(expected, tmp_path / "py", ["timeseries.csv", "contacts.csv"])
+
+
+def test_lees_edwards_cell_equals_the_cli(cli, tiny_file, tmp_path):
+    # The wall-free cell (docs/shear-cell.md "The Lees–Edwards cell") from
+    # Python: the same bits as the CLI, no wall bodies, null wall forces, and
+    # wall_velocity the images' speed.
+    le = "cell.boundary=lees-edwards"
+    expected = cli_run(cli, tiny_file, tmp_path / "cli", "--set", le)
+    cell = dilatant.ShearCell(TINY, overrides=[le])
+    assert set(np.unique(cell.groups)) == {0}
+    while not cell.done:
+        cell.step()
+    cell.finish()
+    out = tmp_path / "py"
+    cell.write_results(out)
+    assert_same_files(expected, out, ["timeseries.csv", "contacts.csv", "velocity_profile.csv"])
+    summary = cell.summary()
+    assert summary["boundary"] == "lees-edwards"
+    assert summary["bottom_wall_force_x"] is None
+    assert summary["eta"] == json.loads((expected / "summary.json").read_text())["eta"]
+    assert cell.wall_velocity > 0.0

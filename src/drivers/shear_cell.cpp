@@ -36,7 +36,9 @@ void start_measurements(const Config& config, ShearCellState& s) {
 
 ShearCellState new_state(const Config& config) {
   ShearCellState s;
-  s.world = build_shear_cell(config, s.geometry, s.walls);
+  s.world = config.cell()->boundary == CellBoundary::LeesEdwards
+                ? build_lees_edwards_cell(config, s.geometry, s.lees_edwards)
+                : build_shear_cell(config, s.geometry, s.walls);
   start_measurements(config, s);
   return s;
 }
@@ -66,15 +68,33 @@ ShearCell ShearCell::resumed(Config config, const std::filesystem::path& checkpo
 
 ShearCell ShearCell::continued(Config config, const std::filesystem::path& checkpoint) {
   ShearCellState previous = load_checkpoint(checkpoint);
-  const Vec3& size = config.cell()->size;
+  const CellConfig& cell = *config.cell();
+  const Vec3& size = cell.size;
+  // The same boundary too: a wall cell's state cannot continue without walls,
+  // nor a Lees–Edwards state (whose z is periodic, so Lz must match) with them.
+  const bool le = cell.boundary == CellBoundary::LeesEdwards;
+  const bool same_kind = le ? previous.is_lees_edwards() && previous.world.box.length[2] == size[2]
+                            : !previous.is_lees_edwards() && !previous.walls.top().spheres.empty();
   if (previous.world.box.length[0] != size[0] || previous.world.box.length[1] != size[1] ||
-      previous.walls.top().spheres.empty())
-    throw std::runtime_error(fmt::format("{}: not a state of this cell (cell.size = [{}, {}, {}])",
-                                         checkpoint.string(), size[0], size[1], size[2]));
+      !same_kind)
+    throw std::runtime_error(fmt::format(
+        "{}: not a state of this cell (cell.size = [{}, {}, {}], cell.boundary = \"{}\")",
+        checkpoint.string(), size[0], size[1], size[2], le ? "lees-edwards" : "walls"));
   ShearCellState s;
   s.world = std::move(previous.world);
   s.world.time = 0.0;
   s.walls = std::move(previous.walls);
+  if (le) {
+    // The images keep their offset and speed; the drive is this config's
+    // (a rate-controlled continuation imposes its own rate from the first step).
+    LeesEdwardsDrive drive = previous.lees_edwards.drive();
+    drive.drive_force = cell.shear_stress * drive.area;
+    drive.rate_controlled = cell.control == ShearControl::Rate;
+    drive.rate = drive.rate_controlled ? cell.shear_rate : 0.0;
+    if (cell.boundary_mass > 0.0) drive.mass = cell.boundary_mass;
+    s.lees_edwards = LeesEdwards(drive);
+    if (drive.rate_controlled) s.world.box.shear_velocity = drive.rate * size[2];
+  }
   s.geometry = previous.geometry;
   s.dt = previous.dt;
   s.contact_memory = std::move(previous.contact_memory);
@@ -100,9 +120,20 @@ ShearCell::StepChoice ShearCell::choose_dt() const {
     v_max = std::max(v_max, b.velocity[i].norm() + b.radius[i] * b.angular_velocity[i].norm());
     r_min = std::min(r_min, b.radius[i]);
   }
-  const SlidingWall& wall = state_.walls.top();
   const double c = config_.solver.max_displacement;
-  const double dt_drive = std::sqrt(2.0 * c * r_min * wall.mass / wall.drive_force);
+  // The drive's acceleration: the top wall's F / M, or the Lees–Edwards
+  // boundary's tau A / M (boundary/lees_edwards.hpp). Under rate control the
+  // boundary does not accelerate; its images move at V, and the bound is
+  // then that of a body at V, c r_min / V.
+  double dt_drive;
+  if (!state_.is_lees_edwards()) {
+    const SlidingWall& wall = state_.walls.top();
+    dt_drive = std::sqrt(2.0 * c * r_min * wall.mass / wall.drive_force);
+  } else if (const double a = state_.lees_edwards.drive_acceleration(); a > 0.0) {
+    dt_drive = std::sqrt(2.0 * c * r_min / a);
+  } else {
+    dt_drive = c * r_min / std::abs(state_.world.box.shear_velocity);
+  }
   const double dt_speed = v_max > 0.0 ? c * r_min / v_max : dt_drive;
   return {std::min(dt_drive, dt_speed), dt_drive <= dt_speed, dt_drive, c * r_min / dt_drive};
 }
@@ -126,11 +157,12 @@ const StepReport& ShearCell::step() {
   // Never a silent bad number: a state that has blown up stops the run (a
   // sweep records the point as failed with this message).
   if (!std::isfinite(choice.dt) || choice.dt < kCollapsedStep * choice.dt_drive ||
-      !std::isfinite(s.walls.top().velocity)) {
+      !std::isfinite(s.boundary_velocity())) {
     throw std::runtime_error(fmt::format(
-        "numerical blow-up at step {} (strain {:.4g}): wall speed {:.3g}, time step {:.3g} "
+        "numerical blow-up at step {} (strain {:.4g}): {} speed {:.3g}, time step {:.3g} "
         "against the drive's {:.3g}; the run is stopped",
-        s.steps, s.strain, s.walls.top().velocity, choice.dt, choice.dt_drive));
+        s.steps, s.strain, s.is_lees_edwards() ? "boundary" : "wall", s.boundary_velocity(),
+        choice.dt, choice.dt_drive));
   }
   s.dt = choice.dt;
   cost_.steps_dt_by_drive += choice.by_drive ? 1.0 : 0.0;
@@ -139,18 +171,23 @@ const StepReport& ShearCell::step() {
   const SlidingWall& wall = s.walls.top();
   if (s.interval.steps == 0.0) s.interval.kinetic_start = total_kinetic_energy();
   // Work of the drive over the prediction, F dt (V + V_free)/2: exactly the
-  // wall's kinetic-energy gain before the contacts act.
+  // wall's kinetic-energy gain before the contacts act (the Lees–Edwards
+  // boundary's is added once the step's stress is known, in accumulate()).
   const double drive_work =
-      wall.drive_force * s.dt * (wall.velocity + 0.5 * s.dt * wall.drive_force / wall.mass);
+      s.is_lees_edwards()
+          ? 0.0
+          : wall.drive_force * s.dt * (wall.velocity + 0.5 * s.dt * wall.drive_force / wall.mass);
   // The drag is relative to the linear profile between the walls' mean
   // surfaces (fluid/stokes_drag.hpp) at the wall speed of the step's start: the
   // profile a steady flow without slip has (docs/shear-cell.md), so that the
-  // fluid neither drives nor brakes it.
-  if (fluid_)
-    fluid_->set_ambient(
-        {.shear_rate = wall.velocity / s.geometry.gap_height, .z0 = s.geometry.wall_radius_mean});
+  // fluid neither drives nor brakes it. Under Lees–Edwards: the homogeneous
+  // profile of the box, centred at Lz/2 (mean_flow()).
+  if (fluid_) {
+    const MeanShearFlow flow = mean_flow();
+    fluid_->set_ambient({.shear_rate = flow.shear_rate, .z0 = flow.z0});
+  }
   try {
-    last_ = stepper_.step(s.world, &s.walls);
+    last_ = stepper_.step(s.world, &s.boundary());
   } catch (const NumericalFault& fault) {
     throw NumericalFault(fmt::format("step {} (strain {:.4g}): {}; the run is stopped", s.steps + 1,
                                      s.strain, fault.what()));
@@ -162,10 +199,15 @@ const StepReport& ShearCell::step() {
     cost_.sweep_equivalents += last_.solve.contact_visits / double(last_.contacts_detected);
   cost_.steps += 1.0;
   ++s.steps;
-  s.strain += wall.velocity * s.dt / lz;
+  // The speed the strain advances with: the wall's at the step's end, or the
+  // images' of the step (constant within it; respond() changes it below).
+  const double velocity = s.boundary_velocity();
+  s.strain += velocity * s.dt / lz;
 
   const auto measure_start = std::chrono::steady_clock::now();
-  accumulate(last_);
+  const double sigma_zx = accumulate(last_, velocity);
+  // Stress control of the Lees–Edwards boundary: the next step's speed.
+  if (s.is_lees_edwards()) s.lees_edwards.respond(s.world.box, sigma_zx, s.dt);
   s.interval.work_drive += drive_work;
   s.interval.kinetic_end = total_kinetic_energy();
   if (s.strain >= s.next_row_strain) {
@@ -181,7 +223,15 @@ const StepReport& ShearCell::step() {
   return last_;
 }
 
-void ShearCell::accumulate(const StepReport& report) {
+MeanShearFlow ShearCell::mean_flow() const {
+  const ShearCellState& s = state_;
+  const double lz = config_.cell()->size[2];
+  if (s.is_lees_edwards()) return {.shear_rate = s.world.box.shear_velocity / lz, .z0 = 0.5 * lz};
+  return {.shear_rate = s.walls.top().velocity / s.geometry.gap_height,
+          .z0 = s.geometry.wall_radius_mean};
+}
+
+double ShearCell::accumulate(const StepReport& report, double velocity) {
   ShearCellState& s = state_;
   const CellConfig& cell = *config_.cell();
   const std::vector<Contact>& contacts = stepper_.contacts();
@@ -189,10 +239,11 @@ void ShearCell::accumulate(const StepReport& report) {
   const bool steady = s.strain > config_.run.transient_strain;
   const ContactCounts n = count_contacts(s.walls.body_groups(), contacts, dt,
                                          config_.friction.s_lim, steady ? &s.histogram : nullptr);
-  const WallForces f = wall_forces(s.walls.body_groups(), contacts, dt);
+  const bool le = s.is_lees_edwards();
+  const WallForces f = le ? WallForces{} : wall_forces(s.walls.body_groups(), contacts, dt);
   IntervalSums& a = s.interval;
   a.time += dt;
-  a.velocity += s.walls.top().velocity * dt;
+  a.velocity += velocity * dt;
   a.kinetic_energy += report.kinetic_energy * dt;
   a.contacts += double(report.contacts_closed) * dt;
   // Contact fractions are time averages: with the adaptive step, a plain count
@@ -202,7 +253,7 @@ void ShearCell::accumulate(const StepReport& report) {
   a.over_s_lim += n.over_s_lim * dt;
   a.impulsive += n.impulsive * dt;
   a.impulsive_boundary += n.impulsive_boundary * dt;
-  a.normal_stress += 0.5 * (f.top[2] - f.bottom[2]) / area * dt;
+  if (!le) a.normal_stress += 0.5 * (f.top[2] - f.bottom[2]) / area * dt;
   a.bottom_force_x += f.bottom[0] * dt;
   a.top_force_z += f.top[2] * dt;
   a.bottom_force_z += f.bottom[2] * dt;
@@ -230,16 +281,24 @@ void ShearCell::accumulate(const StepReport& report) {
         c.with_plane() ? double(c.other) : double(b.id[static_cast<std::size_t>(c.other)]);
   }
   // Particle stress over the volume between the walls' centre planes, z = 0 to
-  // Lz (measure/particle_stress.hpp: there its sigma_zx averages to tau); the
-  // mean flow is the no-slip profile the drag also uses.
+  // Lz (measure/particle_stress.hpp: there its sigma_zx averages to tau), or
+  // over the Lees–Edwards box; the mean flow is the one the drag also uses.
   const Tensor3 virial = contact_impulse_moment(contacts);
-  const Tensor3 kinetic = velocity_fluctuation_moment(
-      s.world.bodies, {.shear_rate = s.walls.top().velocity / s.geometry.gap_height,
-                       .z0 = s.geometry.wall_radius_mean});
+  const Tensor3 kinetic = velocity_fluctuation_moment(s.world.bodies, mean_flow());
   const double volume = area * cell.size[2];
-  for (std::size_t k = 0; k < virial.size(); ++k)
+  Tensor3 sigma;
+  for (std::size_t k = 0; k < virial.size(); ++k) {
     a.stress_dt[k] -= (virial[k] + kinetic[k] * dt) / volume;
+    sigma[k] = -(virial[k] + kinetic[k] * dt) / (volume * dt);
+  }
+  if (le) {
+    // No walls: the normal stress is the bulk's, -sigma_zz, and the power fed
+    // in is the images' work on the box, A V sigma_zx (lees_edwards.hpp).
+    a.normal_stress -= sigma[tensor_index(kZ, kZ)] * dt;
+    a.work_drive += area * velocity * sigma[tensor_index(kZ, kX)] * dt;
+  }
   if (steady) s.profile.add(s.world, s.walls.body_groups(), dt);
+  return sigma[tensor_index(kZ, kX)];
 }
 
 // A row of the time series from the interval's sums, with the bulk fraction
@@ -248,8 +307,12 @@ void ShearCell::close_row() {
   ShearCellState& s = state_;
   const double lz = config_.cell()->size[2];
   s.rows.push_back(s.interval.close(s.world.time, s.strain));
+  // Under Lees–Edwards the flow is homogeneous and its fraction exact, the
+  // box's (a slab would cut spheres at the periodic boundary).
   s.rows.back().phi_bulk =
-      slab_volume_fraction(s.world, s.walls.body_groups(), 0.25 * lz, 0.75 * lz);
+      s.is_lees_edwards()
+          ? s.geometry.phi_box
+          : slab_volume_fraction(s.world, s.walls.body_groups(), 0.25 * lz, 0.75 * lz);
   s.interval = IntervalSums{};
 }
 

@@ -20,6 +20,7 @@
 #include "fluid/suspending_fluid.hpp"
 #include "io/config.hpp"
 #include "measure/cell_units.hpp"
+#include "measure/particle_stress.hpp"
 #include "measure/run_cost.hpp"
 #include "solver/time_stepper.hpp"
 
@@ -94,7 +95,12 @@ class ShearCell {
   static constexpr double kCollapsedStep = 1e-6;
   StepChoice choose_dt() const;
   double total_kinetic_energy() const;
-  void accumulate(const StepReport& report);
+  // The step's measurements with the boundary speed it ran at; returns its
+  // particle shear stress sigma_zx (the Lees–Edwards boundary responds to it).
+  double accumulate(const StepReport& report, double velocity);
+  // The mean flow the drag and the kinetic stress subtract: the no-slip
+  // profile between the walls, or the box's homogeneous shear about Lz/2.
+  MeanShearFlow mean_flow() const;
   void close_row();
 
   Config config_;

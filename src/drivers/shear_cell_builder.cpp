@@ -28,34 +28,16 @@ void add_wall(World& world, std::vector<BodyGroup>& groups, const std::vector<Wa
   }
 }
 
-}  // namespace
-
-World build_shear_cell(const Config& config, ShearCellGeometry& geometry, RoughWalls& walls) {
+// Draws radii until the next one would overshoot cell.phi of Lx Ly
+// counted_height, places them at random with centres in (z_lo, z_hi), grows
+// them to full size around the bodies already there, and numbers them by
+// height. Sets the geometry's mobile count and first index; returns the
+// spheres' volume.
+double add_mobile_spheres(const Config& config, double counted_height, double z_lo, double z_hi,
+                          std::mt19937_64& rng, World& world, std::vector<BodyGroup>& group,
+                          ShearCellGeometry& geometry) {
   const CellConfig& cell = *config.cell();
   const double lx = cell.size[0], ly = cell.size[1], lz = cell.size[2];
-  std::mt19937_64 rng(static_cast<std::uint64_t>(cell.seed));
-
-  World world;
-  std::vector<BodyGroup> group;  // per body
-  world.box.length = Vec3(lx, ly, lz);
-  world.box.periodic = {true, true, false};
-  world.planes.push_back(Plane{Vec3::Zero(), Vec3::UnitZ()});
-  world.planes.push_back(Plane{Vec3(0.0, 0.0, lz), -Vec3::UnitZ()});
-
-  const auto bottom = random_monolayer(lx, ly, 0.0, cell.radius_min, cell.radius_max, rng);
-  const auto top = random_monolayer(lx, ly, lz, cell.radius_min, cell.radius_max, rng);
-  add_wall(world, group, bottom, BodyGroup::BottomWall, config.density);
-  add_wall(world, group, top, BodyGroup::TopWall, config.density);
-  double wall_radius_sum = 0.0;
-  for (const auto& s : bottom) wall_radius_sum += s.radius;
-  for (const auto& s : top) wall_radius_sum += s.radius;
-  geometry.wall_radius_mean = wall_radius_sum / double(bottom.size() + top.size());
-  geometry.gap_height = lz - 2.0 * geometry.wall_radius_mean;
-
-  // Mobile spheres: radii drawn until the next one would overshoot phi, counted
-  // against the volume cell.phi_definition names.
-  const double counted_height =
-      cell.phi_definition == PhiDefinition::Box ? lz : geometry.gap_height;
   const double target_volume = cell.phi * lx * ly * counted_height;
   std::uniform_real_distribution<double> ur(cell.radius_min, cell.radius_max);
   std::vector<double> radii;
@@ -74,10 +56,7 @@ World build_shear_cell(const Config& config, ShearCellGeometry& geometry, RoughW
   }
   geometry.first_mobile = world.bodies.size();
   geometry.mobile_count = radii.size();
-  geometry.phi = volume / (lx * ly * geometry.gap_height);
-  geometry.phi_box = volume / (lx * ly * lz);
-  std::uniform_real_distribution<double> ux(0.0, lx), uy(0.0, ly),
-      uz(cell.radius_max, lz - cell.radius_max);
+  std::uniform_real_distribution<double> ux(0.0, lx), uy(0.0, ly), uz(z_lo, z_hi);
   for (double r : radii) {
     world.bodies.add_sphere(static_cast<std::int64_t>(world.bodies.size()),
                             Vec3(ux(rng), uy(rng), uz(rng)), r, config.density, false);
@@ -107,6 +86,41 @@ World build_shear_cell(const Config& config, ShearCellGeometry& geometry, RoughW
   for (std::size_t i = geometry.first_mobile; i < world.bodies.size(); ++i) {
     world.bodies.id[i] = static_cast<std::int64_t>(i);
   }
+  return volume;
+}
+
+}  // namespace
+
+World build_shear_cell(const Config& config, ShearCellGeometry& geometry, RoughWalls& walls) {
+  const CellConfig& cell = *config.cell();
+  const double lx = cell.size[0], ly = cell.size[1], lz = cell.size[2];
+  std::mt19937_64 rng(static_cast<std::uint64_t>(cell.seed));
+
+  World world;
+  std::vector<BodyGroup> group;  // per body
+  world.box.length = Vec3(lx, ly, lz);
+  world.box.periodic = {true, true, false};
+  world.planes.push_back(Plane{Vec3::Zero(), Vec3::UnitZ()});
+  world.planes.push_back(Plane{Vec3(0.0, 0.0, lz), -Vec3::UnitZ()});
+
+  const auto bottom = random_monolayer(lx, ly, 0.0, cell.radius_min, cell.radius_max, rng);
+  const auto top = random_monolayer(lx, ly, lz, cell.radius_min, cell.radius_max, rng);
+  add_wall(world, group, bottom, BodyGroup::BottomWall, config.density);
+  add_wall(world, group, top, BodyGroup::TopWall, config.density);
+  double wall_radius_sum = 0.0;
+  for (const auto& s : bottom) wall_radius_sum += s.radius;
+  for (const auto& s : top) wall_radius_sum += s.radius;
+  geometry.wall_radius_mean = wall_radius_sum / double(bottom.size() + top.size());
+  geometry.gap_height = lz - 2.0 * geometry.wall_radius_mean;
+
+  // Mobile spheres: radii drawn until the next one would overshoot phi, counted
+  // against the volume cell.phi_definition names.
+  const double counted_height =
+      cell.phi_definition == PhiDefinition::Box ? lz : geometry.gap_height;
+  const double volume = add_mobile_spheres(config, counted_height, cell.radius_max,
+                                           lz - cell.radius_max, rng, world, group, geometry);
+  geometry.phi = volume / (lx * ly * geometry.gap_height);
+  geometry.phi_box = volume / (lx * ly * lz);
 
   SlidingWall wall;
   double wall_mass = 0.0;
@@ -128,6 +142,58 @@ World build_shear_cell(const Config& config, ShearCellGeometry& geometry, RoughW
     world.bodies.velocity[i] = Vec3(cell.initial_shear_rate * world.bodies.position[i][2], 0, 0);
   }
   walls = RoughWalls(std::move(group), std::move(wall), CoulombLaw{});
+  return world;
+}
+
+}  // namespace dilatant
+
+namespace dilatant {
+
+double top_wall_mass(const Config& config) {
+  const CellConfig& cell = *config.cell();
+  const double lx = cell.size[0], ly = cell.size[1], lz = cell.size[2];
+  // The wall cell's draws, in its order (build_shear_cell): bottom, then top.
+  std::mt19937_64 rng(static_cast<std::uint64_t>(cell.seed));
+  random_monolayer(lx, ly, 0.0, cell.radius_min, cell.radius_max, rng);
+  double mass = 0.0;
+  for (const WallSphere& s : random_monolayer(lx, ly, lz, cell.radius_min, cell.radius_max, rng))
+    mass += config.density * sphere_volume(s.radius);
+  return mass;
+}
+
+World build_lees_edwards_cell(const Config& config, ShearCellGeometry& geometry,
+                              LeesEdwards& boundary) {
+  const CellConfig& cell = *config.cell();
+  const double lx = cell.size[0], ly = cell.size[1], lz = cell.size[2];
+  std::mt19937_64 rng(static_cast<std::uint64_t>(cell.seed));
+  World world;
+  world.box.length = Vec3(lx, ly, lz);
+  world.box.periodic = {true, true, true};
+  world.box.lees_edwards = true;  // at rest while the packing grows
+  std::vector<BodyGroup> group;   // all particles
+  // phi is exact here: the mobile spheres' volume over Lx Ly Lz, no walls.
+  const double volume = add_mobile_spheres(config, lz, 0.0, lz, rng, world, group, geometry);
+  geometry.phi_box = volume / (lx * ly * lz);
+  geometry.phi = geometry.phi_box;
+  geometry.gap_height = lz;
+  geometry.wall_radius_mean = 0.0;
+
+  const bool rate = cell.control == ShearControl::Rate;
+  LeesEdwardsDrive drive;
+  drive.area = lx * ly;
+  drive.rate_controlled = rate;
+  drive.rate = rate ? cell.shear_rate : 0.0;
+  drive.drive_force = cell.shear_stress * drive.area;
+  drive.mass = cell.boundary_mass > 0.0 ? cell.boundary_mass : top_wall_mass(config);
+  boundary = LeesEdwards(drive);
+  // Start on the homogeneous profile, centred so that the box's momentum is
+  // zero: u_x = gamma_dot (z - Lz/2), the images above at V = gamma_dot Lz
+  // (under stress control gamma_dot = cell.initial_shear_rate, as the wall
+  // cell starts; under rate control the imposed rate).
+  const double gamma_dot = rate ? cell.shear_rate : cell.initial_shear_rate;
+  world.box.shear_velocity = gamma_dot * lz;
+  for (std::size_t i = 0; i < world.bodies.size(); ++i)
+    world.bodies.velocity[i] = Vec3(gamma_dot * (world.bodies.position[i][2] - 0.5 * lz), 0, 0);
   return world;
 }
 

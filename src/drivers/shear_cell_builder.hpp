@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "boundary/lees_edwards.hpp"
 #include "boundary/rough_walls.hpp"
 #include "io/config.hpp"
 #include "world/world.hpp"
@@ -36,5 +37,16 @@ struct ShearCellGeometry {
 // ones numbered by height) and its boundary, the rough walls. The walls'
 // contact law is left at its default: it depends on eta_f, a run setting.
 World build_shear_cell(const Config& config, ShearCellGeometry& geometry, RoughWalls& walls);
+
+// The wall-free cell (cell.boundary = "lees-edwards"; boundary/lees_edwards.hpp):
+// a triply periodic box of mobile spheres at cell.phi of Lx Ly Lz exactly,
+// grown as the wall cell's packing, with Lees–Edwards images; bodies on the
+// centred linear profile. Geometry: phi = phi_box, gap_height = Lz, no walls.
+World build_lees_edwards_cell(const Config& config, ShearCellGeometry& geometry,
+                              LeesEdwards& boundary);
+
+// The mass of the wall cell's top wall for this cell.size and cell.seed (the
+// default fictitious mass of the Lees–Edwards boundary).
+double top_wall_mass(const Config& config);
 
 }  // namespace dilatant

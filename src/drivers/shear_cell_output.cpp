@@ -27,6 +27,8 @@ void ShearCell::write_snapshot(const std::filesystem::path& out) {
   const auto particles = fmt::format("snapshots/particles_{:04d}.vtp", k);
   const auto network = fmt::format("snapshots/contacts_{:04d}.vtp", k);
   std::vector<std::uint8_t> groups;
+  // Under Lees–Edwards every body is a particle (the groups are empty: zeros),
+  // drawn at its wrapped position in the box.
   for (BodyGroup g : s.walls.groups()) groups.push_back(static_cast<std::uint8_t>(g));
   write_particles_vtp(out / particles, s.world, groups);
   write_contacts_vtp(out / network, s.world, stepper_.contacts(), s.dt);
@@ -61,7 +63,7 @@ std::string ShearCell::progress_line(double elapsed) const {
   const ShearCellState& s = state_;
   // The wall speed over the current output interval, else the last row's.
   const double v = s.interval.time > 0.0 ? s.interval.velocity / s.interval.time
-                   : s.rows.empty()      ? s.walls.top().velocity
+                   : s.rows.empty()      ? s.boundary_velocity()
                                          : s.rows.back().wall_velocity;
   const double gdot = shear_rate(v, config_.cell()->size[2]);
   const double done = s.strain / config_.run.strain;
@@ -75,10 +77,14 @@ std::string ShearCell::progress_line(double elapsed) const {
     state = fmt::format("not yet steady: wall speed {:+.0f}% +- {:.0f}%", 100.0 * d.change,
                         100.0 * d.error);
   }
+  // The stress: applied, or under rate control the last row's measured one.
+  const bool rate = config_.cell()->control == ShearControl::Rate;
+  const double tau = !rate            ? config_.cell()->shear_stress
+                     : s.rows.empty() ? 0.0
+                                      : invariants(s.rows.back().stress).shear;
   return fmt::format("strain {:6.2f}/{:.2f}  gamma_dot {:9.3g}  eta {:9.3g}  left {:5.0f} s  {}",
                      s.strain, config_.run.strain, gdot / units_.rate_unit,
-                     relative_viscosity(config_.cell()->shear_stress, gdot, units_.eta_f), left,
-                     state);
+                     relative_viscosity(tau, gdot, units_.eta_f), left, state);
 }
 
 }  // namespace dilatant

@@ -14,11 +14,11 @@ namespace dilatant {
 
 namespace {
 
-// "DILATNT5": rows with the particle stress tensor, the box's Lees–Edwards
-// state (4: rows with the fluid
+// "DILATNT6": the Lees–Edwards boundary's drive (5: rows with the particle
+// stress tensor, the box's Lees–Edwards state; 4: rows with the fluid
 // forces' powers, geometry with phi_box; 3: rows with the contact residual;
 // 2: contact memory with regime)
-constexpr std::uint64_t kMagic = 0x35544e54414c4944ULL;
+constexpr std::uint64_t kMagic = 0x36544e54414c4944ULL;
 
 // One function serves both directions so the field order cannot diverge.
 template <class Archive, class State>
@@ -51,6 +51,12 @@ void visit_state(Archive& a, State& s) {
   a.value(wall.mass);
   a.value(wall.drive_force);
   a.value(wall.velocity);
+  auto& drive = s.lees_edwards.drive();
+  a.value(drive.mass);
+  a.value(drive.drive_force);
+  a.value(drive.area);
+  a.value(drive.rate);
+  a.value(drive.rate_controlled);
   a.value(s.geometry);
   a.value(s.dt);
   a.value(s.steps);

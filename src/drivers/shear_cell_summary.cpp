@@ -104,9 +104,12 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   }
 
   const double gdot_code = rheology.shear_rate;
+  const bool le = s.is_lees_edwards();
   // Bulk shear rate: slope of the profile over the central half of the gap.
-  const LinearFit bulk = s.profile.fit(0.25 * lz, 0.75 * lz);
-  const LinearFit whole = s.profile.fit(2.0, lz - 2.0);
+  // The Lees–Edwards box is all bulk (no wall layers to leave out): its slope
+  // and deviation are over the whole height, every bin of the profile.
+  const LinearFit bulk = le ? s.profile.fit(0.0, lz) : s.profile.fit(0.25 * lz, 0.75 * lz);
+  const LinearFit whole = le ? bulk : s.profile.fit(2.0, lz - 2.0);
   const double rel_err = rheology.relative_error;
   // Without slip the profile is linear between the walls' mean surfaces, so the
   // bulk rate expected is V / (Lz - 2 r_w), not the paper's V / Lz (7% lower in
@@ -128,12 +131,19 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   j["beyond_s_lim"] = config.friction.viscous_beyond_s_lim ? "viscous" : "cap";
   j["lubrication"] = config.fluid.lubrication == LubricationKind::Normal ? "normal" : "none";
   j["drag"] = config.fluid.drag == DragKind::Stokes ? "stokes" : "none";
-  // cell.phi counts as cell.phi_definition says; both counts are reported.
-  const bool box = cell.phi_definition == PhiDefinition::Box;
+  // The boundary (docs/shear-cell.md "The Lees–Edwards cell"): without walls
+  // the wall-only fields below are null, and wall_velocity is the images'
+  // speed V = gamma_dot Lz.
+  j["boundary"] = le ? "lees-edwards" : "walls";
+  const bool rate = cell.control == ShearControl::Rate;
+  j["control"] = rate ? "rate" : "stress";
+  // cell.phi counts as cell.phi_definition says; both counts are reported
+  // (Lees–Edwards: the box, exactly).
+  const bool box = le || cell.phi_definition == PhiDefinition::Box;
   j["phi"] = box ? s.geometry.phi_box : s.geometry.phi;
   j["phi_requested"] = cell.phi;
   j["phi_definition"] = box ? "box" : "between-walls";
-  j["phi_between_walls"] = s.geometry.phi;
+  j["phi_between_walls"] = le ? nlohmann::json(nullptr) : nlohmann::json(s.geometry.phi);
   j["phi_box"] = s.geometry.phi_box;
   if (phi_bulk.samples > 0) {
     j["phi_bulk"] = phi_bulk.mean;  // central half of the gap, steady-state average
@@ -141,11 +151,14 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   } else {
     // No row after the transient (a jam stops the wall before it): the packing
     // the run ends in still has a bulk fraction, from its final state.
-    j["phi_bulk"] = slab_volume_fraction(s.world, s.walls.body_groups(), 0.25 * lz, 0.75 * lz);
+    // (Lees–Edwards: the box's exact fraction, as every row has.)
+    j["phi_bulk"] = le ? s.geometry.phi_box
+                       : slab_volume_fraction(s.world, s.walls.body_groups(), 0.25 * lz, 0.75 * lz);
     j["phi_bulk_err"] = nullptr;
   }
   j["mobile_spheres"] = s.geometry.mobile_count;
-  j["wall_radius_mean"] = s.geometry.wall_radius_mean;
+  j["wall_radius_mean"] =
+      le ? nlohmann::json(nullptr) : nlohmann::json(s.geometry.wall_radius_mean);
   j["shear_stress"] = cell.shear_stress / u.stress_unit;
   j["jammed"] = s.jammed;
   if (s.jammed) {
@@ -168,6 +181,17 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   j["normal_stress"] = p.mean / u.stress_unit;
   j["normal_stress_err"] = p.error / u.stress_unit;
   add_stress(j, s.rows, from, u.stress_unit);
+  if (rate) {
+    // Rate control imposes gamma_dot (its error is zero: V is fixed) and
+    // measures the stress: the viscosity is the measured sigma_zx over it.
+    const double tau = j["shear_stress_measured"].get<double>() * u.stress_unit;
+    const double tau_err = j["shear_stress_measured_err"].get<double>() * u.stress_unit;
+    j["shear_stress"] = j["shear_stress_measured"];
+    if (!s.jammed) {
+      j["eta"] = relative_viscosity(tau, gdot_code, u.eta_f);
+      j["eta_err"] = relative_viscosity(tau_err, gdot_code, u.eta_f);
+    }
+  }
   j["inertial_number"] = rheology.inertial_number;
   j["viscous_number"] = rheology.viscous_number;
   j["frac_bl"] = bl.mean;
@@ -192,12 +216,15 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   j["wall_velocity_drift"] = drift.change;  // second half of the window minus first, relative
   j["wall_velocity_drift_err"] = drift.error;
   j["valid"] = !s.jammed && (!lubricated || over.mean <= 0.05) && profile_consistent && !drifting;
-  j["bottom_wall_force_x"] = fx.mean;
-  j["bottom_wall_force_x_err"] = fx.error;
-  j["top_wall_force_z"] = fz_top.mean;  // push of the particles on the top wall
-  j["top_wall_force_z_err"] = fz_top.error;
-  j["bottom_wall_force_z"] = fz_bottom.mean;  // negative: the bottom wall is pushed down
-  j["bottom_wall_force_z_err"] = fz_bottom.error;
+  const auto wall_only = [le](double x) {
+    return le ? nlohmann::json(nullptr) : nlohmann::json(x);
+  };
+  j["bottom_wall_force_x"] = wall_only(fx.mean);
+  j["bottom_wall_force_x_err"] = wall_only(fx.error);
+  j["top_wall_force_z"] = wall_only(fz_top.mean);  // push of the particles on the top wall
+  j["top_wall_force_z_err"] = wall_only(fz_top.error);
+  j["bottom_wall_force_z"] = wall_only(fz_bottom.mean);  // negative: the bottom wall is pushed down
+  j["bottom_wall_force_z_err"] = wall_only(fz_bottom.error);
   j["max_overlap"] = max_overlap;
   // Where it was (step, and the bodies' ids; a plane k as -(k+1)), and whether
   // it exceeds the tolerance of docs/model.md "Overlaps" (a run that does is
@@ -212,7 +239,8 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   }
   j["overlap_tolerance"] = ShearCell::kOverlapTolerance * cell.radius_min;
   j["overlap_exceeded"] = max_overlap > ShearCell::kOverlapTolerance * cell.radius_min;
-  j["applied_force_x"] = cell.shear_stress * area;
+  // tau Lx Ly on the top wall or the Lees–Edwards boundary; none under rate control.
+  j["applied_force_x"] = rate ? nlohmann::json(nullptr) : nlohmann::json(cell.shear_stress * area);
   // Energy budget of the steady state, code units (force x velocity): the drive's
   // power equals the dissipation in impacts and friction plus d(KE)/dt.
   j["power_injected"] = p_drive.mean;

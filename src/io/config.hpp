@@ -37,6 +37,12 @@ enum class LubricationKind { None, Normal };
 enum class DragKind { None, Stokes };
 // What cell.phi counts the mobile spheres' volume against.
 enum class PhiDefinition { BetweenWalls, Box };
+// What bounds the shear cell in z (docs/shear-cell.md "The Lees–Edwards cell"):
+// rough walls, or Lees–Edwards images (periodic in z, no walls).
+enum class CellBoundary { Walls, LeesEdwards };
+// What the cell imposes: the shear stress (the boundary's speed follows), or
+// the shear rate (Lees–Edwards only; the stress is measured).
+enum class ShearControl { Stress, Rate };
 
 struct PlaneConfig {
   Vec3 point = Vec3::Zero();
@@ -63,6 +69,10 @@ struct CellConfig {
   double wall_mass = 0.0;
   double wall_friction = 1.0;
   double initial_shear_rate = 0.2;
+  CellBoundary boundary = CellBoundary::Walls;
+  ShearControl control = ShearControl::Stress;
+  double shear_rate = 0.0;     // imposed under control = rate
+  double boundary_mass = 0.0;  // Lees–Edwards stress control; 0 = a top wall's mass
 };
 
 // Simulated centrifugation (`dilatant jam`, drivers/sediment.hpp): lengths in

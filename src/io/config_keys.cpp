@@ -26,7 +26,8 @@ std::vector<ConfigKey> make_keys() {
   // [cell]: stress-controlled simple shear between rough walls (docs/model.md "The shear cell").
   k.push_back(vec3("cell", "size", Cell, &cell, &CellConfig::size, +positive,
                    "every length must be > 0", "> 0 each", "R",
-                   "Lx, Ly, Lz; periodic in x and y; Lz is the distance between the wall planes"));
+                   "Lx, Ly, Lz; periodic in x and y; Lz is the distance between the wall planes "
+                   "(the box height, periodic too, under cell.boundary = \"lees-edwards\")"));
   k.push_back(number("cell", "phi", Cell, &cell, &CellConfig::phi, open(0.0, 0.74), "",
                      "volume fraction of the mobile spheres, counted as cell.phi_definition says "
                      "(0.74: the densest packing of spheres)"));
@@ -59,6 +60,25 @@ std::vector<ConfigKey> make_keys() {
                      at_least(0.0), "sqrt(tau/rho_p)/R",
                      "start from the linear profile v_x = rate z (the wall at rate Lz); 0 = "
                      "from rest"));
+  k.push_back(choice("cell", "boundary", Cell, &cell, &CellConfig::boundary,
+                     {{"walls", CellBoundary::Walls}, {"lees-edwards", CellBoundary::LeesEdwards}},
+                     "what bounds the cell in z: rough walls (the paper's cell), or Lees-Edwards "
+                     "images, periodic in z with no walls (docs/shear-cell.md \"The Lees-Edwards "
+                     "cell\"; there cell.phi counts Lx Ly Lz and the wall keys are errors)"));
+  k.push_back(choice("cell", "control", Cell, &cell, &CellConfig::control,
+                     {{"stress", ShearControl::Stress}, {"rate", ShearControl::Rate}},
+                     "impose the shear stress cell.shear_stress (the boundary's speed follows), "
+                     "or the shear rate cell.shear_rate (needs cell.boundary = \"lees-edwards\"; "
+                     "the stress is measured)"));
+  k.push_back(number("cell", "shear_rate", Cell, &cell, &CellConfig::shear_rate, at_least(0.0),
+                     "sqrt(tau/rho_p)/R",
+                     "gamma_dot imposed under cell.control = \"rate\" (> 0 there; an error "
+                     "otherwise): the images above move at gamma_dot Lz"));
+  k.push_back(number("cell", "boundary_mass", Cell, &cell, &CellConfig::boundary_mass,
+                     at_least(0.0, " (0 = automatic)"), "rho_p R^3",
+                     "fictitious mass M of the Lees-Edwards boundary under stress control, "
+                     "M dV/dt = Lx Ly (tau - sigma_zx); 0 = the mass the top wall of the wall "
+                     "cell of the same size and seed has"));
   // [scene]: particles from a CSV file, planes, gravity (validation and teaching).
   k.push_back(ConfigKey{
       "scene", "particles", Scene, "string", "", "a CSV file",

@@ -69,6 +69,45 @@ void check_keys(const Section& s, std::string_view section, RunMode mode) {
   }
 }
 
+// The keys of the cell's boundary and control (docs/shear-cell.md "The
+// Lees–Edwards cell"). A key that means nothing for the chosen boundary or
+// control is an error when set to anything but its default, never silently
+// ignored; at its default (which means "none" or "automatic") it may stay, so
+// that a resolved config, which lists every key, loads back.
+void check_boundary_keys(const Section& s, const CellConfig& cell) {
+  const CellConfig defaults;
+  const bool le = cell.boundary == CellBoundary::LeesEdwards;
+  const bool rate = cell.control == ShearControl::Rate;
+  if (!le) {
+    check(s, "control", std::string("rate"), !rate,
+          "needs cell.boundary = \"lees-edwards\" (the wall cell is stress-controlled)");
+    check(s, "boundary_mass", cell.boundary_mass, cell.boundary_mass == defaults.boundary_mass,
+          "is the Lees-Edwards boundary's mass: the wall cell's is cell.wall_mass");
+  } else {
+    const char* without_walls =
+        "means nothing without walls (cell.boundary = \"lees-edwards\": cell.phi counts Lx Ly "
+        "Lz)";
+    check(s, "wall_mass", cell.wall_mass, cell.wall_mass == defaults.wall_mass, without_walls);
+    check(s, "wall_friction", cell.wall_friction, cell.wall_friction == defaults.wall_friction,
+          without_walls);
+    if (cell.phi_definition != defaults.phi_definition)
+      check(s, "phi_definition", *s.find("phi_definition"), false, without_walls);
+    // z is periodic too: a sphere must not meet its own image (as x and y below).
+    check(s, "size", cell.size, cell.size[2] >= 4.0 * cell.radius_max,
+          fmt::format("Lz must be at least 4 largest radii ({}) on a periodic axis",
+                      4.0 * cell.radius_max));
+  }
+  if (rate) {
+    check(s, "shear_rate", cell.shear_rate, cell.shear_rate > 0.0,
+          "must be > 0 under cell.control = \"rate\"");
+    check(s, "boundary_mass", cell.boundary_mass, cell.boundary_mass == defaults.boundary_mass,
+          "means nothing under cell.control = \"rate\" (the boundary's speed is imposed)");
+  } else {
+    check(s, "shear_rate", cell.shear_rate, cell.shear_rate == defaults.shear_rate,
+          "is imposed only under cell.control = \"rate\" (the stress is cell.shear_stress)");
+  }
+}
+
 // Keys that constrain each other, checked once all are read. The message blames
 // the key the user wrote (the later one if both were written).
 void check_constraints(const std::function<Section(std::string_view)>& section, const Config& c) {
@@ -85,6 +124,7 @@ void check_constraints(const std::function<Section(std::string_view)>& section, 
             fmt::format("{} must be at least 4 largest radii ({}) on a periodic axis", name,
                         min_side));
     }
+    check_boundary_keys(s, *cell);
     const Section r = section("run");
     const bool ok = c.run.transient_strain < c.run.strain;
     if (r.find("transient_strain") || !r.find("strain"))

@@ -27,6 +27,11 @@ double contact_point(const Contact& c, const Bodies& b) {
   return b.position[c.i][kAxis] - c.arm_i * c.normal[kAxis];
 }
 
+// Whether the slabs wrap around z: a Lees–Edwards box (z periodic, no walls).
+bool cyclic_slabs(const World& world) {
+  return world.box.periodic[kAxis] && world.box.lees_edwards;
+}
+
 // Extent of the contact points along the axis, and the largest distance along
 // it from a contact point to the centre of one of its spheres.
 struct Extent {
@@ -58,9 +63,23 @@ SlabPartition partition_into_slabs(std::vector<Contact>& contacts, const World& 
                                    std::vector<Contact>& scratch) {
   int slabs = 1;
   Extent e;
-  // A periodic axis would make the first and last slab neighbours through the
-  // boundary; keep one slab there (the shear cell's z is bounded by its walls).
-  if (!world.box.periodic[kAxis] && !contacts.empty()) {
+  const bool cyclic = cyclic_slabs(world);
+  const double period = world.box.length[kAxis];
+  if (cyclic && !contacts.empty()) {
+    // Lees–Edwards: slabs cover the whole period [0, Lz), contact points
+    // wrapped into it. The first and the last slab are neighbours through the
+    // boundary; with an even count >= 4 they have different colours, and two
+    // slabs of one colour are at least one slab apart around the cycle, so
+    // the red-black argument holds as on a bounded axis (2 slabs would give
+    // one slab per colour: no sharing, so at least 4).
+    e = contact_extent(contacts, world);
+    e.low = 0.0;
+    e.high = period;
+    for (int n = 4; n <= kMaxSlabs && std::isfinite(e.reach) && period / n >= 2.0 * e.reach; n *= 2)
+      slabs = n;
+  } else if (!world.box.periodic[kAxis] && !contacts.empty()) {
+    // Bounded z (the wall cell). A periodic z without Lees–Edwards (a scene)
+    // keeps one slab, as before the cyclic partition.
     e = contact_extent(contacts, world);
     const double length = e.high - e.low;
     // A flat (or non-finite) extent gives one slab: no width to cut.
@@ -74,7 +93,9 @@ SlabPartition partition_into_slabs(std::vector<Contact>& contacts, const World& 
     if (slabs > 1) {
       // Clamped as a double first: a contact point outside the extent (or not
       // finite) must not overflow the cast.
-      const double at = (contact_point(c, world.bodies) - e.low) / width;
+      double z = contact_point(c, world.bodies);
+      if (cyclic) z -= period * std::floor(z / period);
+      const double at = (z - e.low) / width;
       slab = std::isfinite(at) ? static_cast<int>(std::clamp(at, 0.0, double(slabs - 1))) : 0;
     }
     return 2 * slab + (touches_boundary(boundary_bodies, c) ? 1 : 0);

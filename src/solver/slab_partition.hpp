@@ -15,7 +15,10 @@
 // spheres numbered by height at the start (drivers/shear_cell_builder.cpp) stay
 // grouped in memory by slab, and two threads rarely write to one cache line.
 // The slab count is 1, 2, 4 or 8 (8 keeps the even and odd halves balanced on
-// 2 and 4 threads), the largest that fits; one slab if z is periodic.
+// 2 and 4 threads), the largest that fits; one slab if z is periodic, except
+// in a Lees–Edwards box, where 4 or 8 slabs wrap around the period (an even
+// count: the first and last slabs, neighbours through the boundary, have
+// different colours; slab_partition.cpp).
 #include <cstddef>
 #include <span>
 #include <vector>

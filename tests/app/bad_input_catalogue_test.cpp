@@ -53,6 +53,14 @@ std::vector<BadInput> catalogue() {
        {{"c.toml", cell}},
        {"run", "c.toml", "--set", "cell.phi=0.9"},
        "cell.phi"},
+      {"rate control of the wall cell",
+       {{"c.toml", cell}},
+       {"run", "c.toml", "--set", "cell.control=rate", "--set", "cell.shear_rate=0.1"},
+       "cell.control"},
+      {"wall friction without walls",
+       {{"c.toml", cell}},
+       {"run", "c.toml", "--set", "cell.boundary=lees-edwards", "--set", "cell.wall_friction=0.5"},
+       "cell.wall_friction"},
       {"negative friction",
        {{"c.toml", cell}},
        {"run", "c.toml", "--set", "friction.mu0=-0.1"},
@@ -189,7 +197,7 @@ TEST(BadInputCatalogue, DamagedOrForeignCheckpointsAreRefused) {
     return (dir.path() / name).string();
   };
   std::string older = bytes;
-  older[7] = '4';  // the format digit of the magic "DILATNT5"
+  older[7] = '5';  // the format digit of the magic "DILATNT6"
   for (const auto& [folder, names] : std::vector<std::pair<std::string, std::string>>{
            {damaged("truncated", bytes.substr(0, 100)), "truncated"},
            {damaged("older", older), "older dilatant"},

@@ -207,6 +207,30 @@ TEST(SweepCommand, AFailingPointIsRecordedWithItsErrorAndTheOthersFinish) {
   EXPECT_EQ(read_table(out / "analysis" / "curves.csv").rows.size(), 2u);
 }
 
+// The wall-free cell sweeps like the wall cell: two lambdas of a
+// Lees–Edwards cell (docs/shear-cell.md "The Lees–Edwards cell"), each a done
+// point of the table with its shear rate; the wall-only columns are empty.
+TEST(SweepCommand, SweepsTheLeesEdwardsCell) {
+  test::CliDir dir;
+  std::string sweep = test::kTinyCell;
+  sweep.replace(sweep.find("[cell]\n"), 7, "[cell]\nboundary = \"lees-edwards\"\n");
+  const fs::path config = dir.write("le.toml", sweep + "[fluid]\nlambda = [3.0, 30.0]\n");
+  const fs::path out = dir.path() / "le";
+  const auto r =
+      dir.run({"sweep", config.string(), "--out", out.string(), "--jobs", "1", "--no-plots"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Table table = read_table(out / "flowcurves.csv");
+  ASSERT_EQ(table.rows.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(table.at(k, "status"), "done");
+    EXPECT_GT(std::stod(table.at(k, "gamma_dot")), 0.0);
+  }
+  const auto summary =
+      nlohmann::json::parse(read_text(out / "points" / "000-lambda=3" / "summary.json"));
+  EXPECT_EQ(summary["boundary"], "lees-edwards");
+  EXPECT_TRUE(summary["bottom_wall_force_x"].is_null());
+}
+
 TEST(SweepCommand, BadSweepFilesExitWith2AndOneLineNamingFileKeyAndPoint) {
   test::CliDir dir;
   const fs::path config =

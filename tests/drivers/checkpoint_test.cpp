@@ -46,10 +46,10 @@ TEST(Checkpoint, AnOlderFormatIsNamedAsSuch) {
   {
     std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
     f.seekp(7);
-    f.put('4');  // "DILATNT4": the format before the stress tensor
+    f.put('5');  // "DILATNT5": the format before the Lees–Edwards boundary's drive
   }
-  EXPECT_NE(message_of(file).find("checkpoint of an older dilatant (format 4; this version reads "
-                                  "format 5)"),
+  EXPECT_NE(message_of(file).find("checkpoint of an older dilatant (format 5; this version reads "
+                                  "format 6)"),
             std::string::npos)
       << message_of(file);
   {

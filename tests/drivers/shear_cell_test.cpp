@@ -93,30 +93,35 @@ TEST(ShearCellBuilder, IsReproducibleFromTheSeed) {
   }
 }
 
+// Both boundaries: the wall cell, and the Lees–Edwards cell under stress
+// control (its boundary speed and image offset are part of the state).
 TEST(ShearCellRun, ResumeEqualsUninterruptedRunBitForBit) {
-  const Config config = small_cell();
-  const auto whole = fresh_dir("whole");
-  const auto pieces = fresh_dir("pieces");
-  run_shear_cell(config, CellRunOptions{RunOptions{whole, true}, false, nullptr});
+  for (const Config& config :
+       {small_cell(), small_cell({"cell.boundary=\"lees-edwards\"", "fluid.lambda=1.0"})}) {
+    SCOPED_TRACE(config.cell()->boundary == CellBoundary::Walls ? "walls" : "lees-edwards");
+    const auto whole = fresh_dir("whole");
+    const auto pieces = fresh_dir("pieces");
+    run_shear_cell(config, CellRunOptions{RunOptions{whole, true}, false, nullptr});
 
-  // Interrupt after the first step (as SIGINT would), then resume to the end.
-  std::atomic<bool> stop{true};
-  const CellOutcome first =
-      run_shear_cell(config, CellRunOptions{RunOptions{pieces, true}, false, &stop});
-  EXPECT_TRUE(first.interrupted);
-  EXPECT_FALSE(std::filesystem::exists(pieces / "summary.json"));
-  run_shear_cell(config, CellRunOptions{RunOptions{pieces, true}, true, nullptr});
+    // Interrupt after the first step (as SIGINT would), then resume to the end.
+    std::atomic<bool> stop{true};
+    const CellOutcome first =
+        run_shear_cell(config, CellRunOptions{RunOptions{pieces, true}, false, &stop});
+    EXPECT_TRUE(first.interrupted);
+    EXPECT_FALSE(std::filesystem::exists(pieces / "summary.json"));
+    run_shear_cell(config, CellRunOptions{RunOptions{pieces, true}, true, nullptr});
 
-  for (const char* f : {"timeseries.csv", "contacts.csv", "velocity_profile.csv",
-                        "sommerfeld_hist.csv", "checkpoint.bin", "cell.pvd"}) {
-    EXPECT_EQ(read(whole / f), read(pieces / f)) << f;
+    for (const char* f : {"timeseries.csv", "contacts.csv", "velocity_profile.csv",
+                          "sommerfeld_hist.csv", "checkpoint.bin", "cell.pvd"}) {
+      EXPECT_EQ(read(whole / f), read(pieces / f)) << f;
+    }
+    // Resuming a finished run changes nothing.
+    const std::string contacts = read(pieces / "contacts.csv");
+    run_shear_cell(config, CellRunOptions{RunOptions{pieces, true}, true, nullptr});
+    EXPECT_EQ(read(pieces / "contacts.csv"), contacts);
+    std::filesystem::remove_all(whole);
+    std::filesystem::remove_all(pieces);
   }
-  // Resuming a finished run changes nothing.
-  const std::string contacts = read(pieces / "contacts.csv");
-  run_shear_cell(config, CellRunOptions{RunOptions{pieces, true}, true, nullptr});
-  EXPECT_EQ(read(pieces / "contacts.csv"), contacts);
-  std::filesystem::remove_all(whole);
-  std::filesystem::remove_all(pieces);
 }
 
 // The parallel sweep (solver/slab_partition.hpp) fixes the order of the
