@@ -133,6 +133,10 @@ void check_consistent(const ShearCellState& s, const std::filesystem::path& file
   if (!s.walls.groups().empty() && s.walls.groups().size() != n) fail("body groups");
   for (const std::int32_t i : s.walls.top().spheres)
     if (i < 0 || static_cast<std::size_t>(i) >= n) fail("wall sphere index");
+  if (s.is_lees_edwards()
+          ? !s.lees_edwards.drive().rate_controlled && !(s.lees_edwards.drive().mass > 0.0)
+          : !s.walls.top().spheres.empty() && !(s.walls.top().mass > 0.0))
+    fail("boundary mass");
   if (s.geometry.first_mobile > n || s.geometry.mobile_count > n - s.geometry.first_mobile)
     fail("mobile range");
   for (int k = 0; k < 3; ++k)
