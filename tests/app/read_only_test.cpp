@@ -27,6 +27,11 @@ const std::vector<std::string> kSmallRun = {"run",
                                             "run.snapshot_interval=0",
                                             "-q"};
 
+// r-x for everyone: the folder can be entered and listed, not written.
+constexpr fs::perms kReadOnly = fs::perms::owner_read | fs::perms::owner_exec |
+                                fs::perms::group_read | fs::perms::group_exec |
+                                fs::perms::others_read | fs::perms::others_exec;
+
 class ReadOnlyOutput : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -61,9 +66,7 @@ class ReadOnlyOutput : public ::testing::Test {
 TEST_F(ReadOnlyOutput, AFolderThatCannotBeCreatedIsNamedAndTheNextRunCompletes) {
   const fs::path parent = dir_.path() / "read-only";
   fs::create_directory(parent);
-  fs::permissions(parent, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
-                              fs::perms::group_exec | fs::perms::others_read |
-                              fs::perms::others_exec);
+  fs::permissions(parent, kReadOnly);
   const fs::path out = parent / "out";
   expect_one_line_naming(run(out), out.string());
   EXPECT_FALSE(fs::exists(out));
@@ -78,8 +81,7 @@ TEST_F(ReadOnlyOutput, AFolderThatCannotBeCreatedIsNamedAndTheNextRunCompletes) 
 TEST_F(ReadOnlyOutput, AReadOnlyFolderIsNamedNothingIsLeftAndTheNextRunCompletes) {
   const fs::path out = dir_.path() / "out";
   fs::create_directory(out);
-  fs::permissions(out, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
-                           fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+  fs::permissions(out, kReadOnly);
   expect_one_line_naming(run(out), out.string());
   EXPECT_TRUE(fs::is_empty(out));
 
