@@ -15,15 +15,27 @@
 
 namespace dilatant::testing {
 
-inline nlohmann::json run_cell_summary(const std::string& name,
-                                       const std::vector<std::string>& overrides) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("dilatant_" + name + "_" + std::to_string(::getpid()));
+// A folder of this process's own for the run called `name`.
+inline std::filesystem::path cell_run_dir(const std::string& name) {
+  return std::filesystem::temp_directory_path() /
+         ("dilatant_" + name + "_" + std::to_string(::getpid()));
+}
+
+// Runs the default cell with `overrides` into `dir` (emptied first) and
+// returns its summary.json; the folder's other files stay for the caller.
+inline nlohmann::json run_cell_in(const std::filesystem::path& dir,
+                                  const std::vector<std::string>& overrides) {
   std::filesystem::remove_all(dir);
   run_shear_cell(default_cell_config(overrides),
                  CellRunOptions{RunOptions{dir, true}, false, nullptr});
   std::ifstream in(dir / "summary.json");
-  auto summary = nlohmann::json::parse(in);
+  return nlohmann::json::parse(in);
+}
+
+inline nlohmann::json run_cell_summary(const std::string& name,
+                                       const std::vector<std::string>& overrides) {
+  const auto dir = cell_run_dir(name);
+  auto summary = run_cell_in(dir, overrides);
   std::filesystem::remove_all(dir);
   return summary;
 }

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "drivers/cell_run_helpers.hpp"
 #include "drivers/shear_cell_builder.hpp"
 #include "drivers/shear_cell_run.hpp"
 #include "drivers/shear_cell_state.hpp"
@@ -26,13 +27,8 @@ const std::vector<std::string> kCell = {
 class SteadyShear : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ =
-        std::filesystem::temp_directory_path() / ("dilatant_steady_" + std::to_string(::getpid()));
-    std::filesystem::remove_all(dir_);
-    run_shear_cell(default_cell_config(kCell),
-                   CellRunOptions{RunOptions{dir_, true}, false, nullptr});
-    std::ifstream in(dir_ / "summary.json");
-    summary_ = nlohmann::json::parse(in);
+    dir_ = testing::cell_run_dir("steady");
+    summary_ = testing::run_cell_in(dir_, kCell);
   }
   static void TearDownTestSuite() { std::filesystem::remove_all(dir_); }
   static std::filesystem::path dir_;
