@@ -234,6 +234,73 @@ TEST(LeesEdwardsCell, AStribeckContactThroughTheBoundaryActsAsInsideTheBox) {
   EXPECT_GT(c.p_t.norm(), 0.0);  // friction acts
 }
 
+// The Stokes drag relative to the box's shear U = rate (z - Lz/2) x
+// (fluid/stokes_drag.hpp), rate = V / Lz as the cell sets it. Both contacts
+// and that drag are invariant under moving every body up by h with velocity
+// + rate h x: a pair in contact moved up so that sphere 1 leaves through the
+// top (stored at the bottom with v_x - V: U there is lower by rate Lz = V too)
+// must take the same impulse and keep the same velocities relative to U. A
+// drag taken against the stored copy's own height without the images' speed
+// would differ by 6 pi eta_f r V.
+TEST(LeesEdwardsCell, TheDragThroughTheBoundaryActsAsInsideTheBox) {
+  const double speed = 1.3, lz = 9.0, rate = speed / lz, h = 4.6;
+  const auto box = [&] {
+    World w;
+    w.box.length = Vec3(8.0, 6.0, lz);
+    w.box.periodic = {true, true, true};
+    w.box.lees_edwards = true;
+    w.box.shear_offset = 2.1;
+    w.box.shear_velocity = speed;
+    return w;
+  };
+  const Vec3 x0(4.0, 3.0, 4.0), x1 = x0 + Vec3(0.3, 0.2, 1.95);
+  const Vec3 v0(0.3, 0.0, 0.9), v1(-0.2, 0.1, -0.8), up(0.0, 0.0, h), flow_up(rate * h, 0, 0);
+  const auto pair_inside = [&] {
+    World w = box();
+    w.bodies.add_sphere(0, x0, 1.0, 1.0, false, v0);
+    w.bodies.add_sphere(1, x1, 1.0, 1.0, false, v1);
+    return w;
+  };
+  World inside = pair_inside(), across = box(), dry = pair_inside();
+  across.bodies.add_sphere(0, x0 + up, 1.0, 1.0, false, v0 + flow_up);
+  Vec3 y1 = x1 + up, w1 = v1 + flow_up;
+  across.box.wrap_body(y1, w1);
+  ASSERT_LT(y1[2], 2.0);  // stored at the bottom, across the boundary
+  across.bodies.add_sphere(1, y1, 1.0, 1.0, false, w1);
+
+  FluidConfig fluid;
+  fluid.drag = DragKind::Stokes;
+  fluid.lubrication = LubricationKind::None;
+  const double eta_f = 0.5;
+  const auto drag = make_fluid(fluid, eta_f);
+  ASSERT_TRUE(drag);
+  drag->set_ambient({.shear_rate = rate, .z0 = 0.5 * lz});
+  const CoulombLaw law{.mu0 = 0.4, .eta_f = eta_f};
+  const SolverSettings settings{.tolerance = 1e-12, .max_iterations = 10000};
+  TimeStepper a(law, settings, 1e-2), b(law, settings, 1e-2);
+  a.set_fluid_forces(drag.get());
+  b.set_fluid_forces(drag.get());
+  a.step(inside);
+  b.step(across);
+  ASSERT_EQ(a.contacts().size(), 1u);
+  ASSERT_EQ(b.contacts().size(), 1u);
+  const Contact &ca = a.contacts()[0], &cb = b.contacts()[0];
+  const double scale = ca.p_n + ca.p_t.norm();
+  EXPECT_GT(ca.p_n, 0.0);
+  EXPECT_NEAR(cb.p_n, ca.p_n, 1e-10 * scale);
+  EXPECT_NEAR((cb.p_t - ca.p_t).norm(), 0.0, 1e-10 * scale);
+  const Bodies &in = inside.bodies, &ac = across.bodies;
+  EXPECT_NEAR((ac.velocity[0] - flow_up - in.velocity[0]).norm(), 0.0, 1e-10);
+  EXPECT_NEAR((ac.velocity[1] - flow_up + Vec3(speed, 0, 0) - in.velocity[1]).norm(), 0.0, 1e-10);
+  EXPECT_NEAR((ac.angular_velocity[0] - in.angular_velocity[0]).norm(), 0.0, 1e-10);
+  EXPECT_NEAR((ac.angular_velocity[1] - in.angular_velocity[1]).norm(), 0.0, 1e-10);
+  // Not vacuous: over this step the drag changed the velocities by much more
+  // than the tolerance (its relaxation time m / (6 pi eta_f r) ~ 0.44).
+  TimeStepper c(law, settings, 1e-2);
+  c.step(dry);
+  EXPECT_GT((dry.bodies.velocity[0] - in.velocity[0]).norm(), 1e-3);
+}
+
 // The parallel sweep wraps its red-black slabs around the periodic z
 // (solver/slab_partition.hpp): the box of 11 R holds 4 slabs, so two threads
 // really share sweeps, and give the same bits as one.
