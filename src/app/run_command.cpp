@@ -72,6 +72,16 @@ int run_cell(const Config& config, const RunOptions& options, bool resume,
     return 1;
   }
   warn_if_unconverged(config, outcome.steps, outcome.unconverged_steps);
+  if (outcome.unconverged_steps > 0 && outcome.contact_residual_step >= 0) {
+    const bool plane = outcome.contact_residual_body_j < 0;
+    std::cerr << fmt::format(
+        "dilatant: warning: the largest contact residual, {:.3g} of a typical impulse, was at "
+        "step {} between body {} and {} {} (summary.json: contact_residual_max_step, "
+        "contact_residual_max_bodies)\n",
+        outcome.contact_residual_max, outcome.contact_residual_step,
+        outcome.contact_residual_body_i, plane ? "plane" : "body",
+        plane ? -outcome.contact_residual_body_j - 1 : outcome.contact_residual_body_j);
+  }
   if (outcome.max_overlap > outcome.overlap_tolerance) {
     const bool plane = outcome.max_overlap_body_j < 0;
     std::cerr << fmt::format(

@@ -6,6 +6,8 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 #include "drivers/model_setup.hpp"
 #include "measure/bulk_fraction.hpp"
@@ -267,18 +269,26 @@ double ShearCell::accumulate(const StepReport& report, double velocity) {
   a.iterations += report.solve.iterations;
   a.max_residual = std::max(a.max_residual, report.solve.residual);
   const ContactResidual& r = report.contact_residual;
+  const auto body_ids = [&](const Contact& c) {  // a plane k as -(k+1), as contacts.csv
+    const Bodies& b = s.world.bodies;
+    return std::pair{
+        double(b.id[static_cast<std::size_t>(c.i)]),
+        c.with_plane() ? double(c.other) : double(b.id[static_cast<std::size_t>(c.other)])};
+  };
+  if (r.max() > a.contact_residual_max && r.worst_contact >= 0) {
+    a.contact_residual_step = double(s.steps);
+    std::tie(a.contact_residual_body_i, a.contact_residual_body_j) =
+        body_ids(contacts[static_cast<std::size_t>(r.worst_contact)]);
+  }
   a.contact_residual_max = std::max(a.contact_residual_max, r.max());
   a.contact_residual_rms += std::hypot(r.normal_rms, r.tangential_rms);
   a.steps += 1.0;
   a.unconverged += report.solve.converged ? 0.0 : 1.0;
   if (report.max_overlap > a.max_overlap && report.max_overlap_contact >= 0) {
-    const Contact& c = contacts[static_cast<std::size_t>(report.max_overlap_contact)];
-    const Bodies& b = s.world.bodies;
     a.max_overlap = report.max_overlap;
     a.max_overlap_step = double(s.steps);
-    a.max_overlap_body_i = double(b.id[static_cast<std::size_t>(c.i)]);
-    a.max_overlap_body_j =
-        c.with_plane() ? double(c.other) : double(b.id[static_cast<std::size_t>(c.other)]);
+    std::tie(a.max_overlap_body_i, a.max_overlap_body_j) =
+        body_ids(contacts[static_cast<std::size_t>(report.max_overlap_contact)]);
   }
   // Particle stress over the volume between the walls' centre planes, z = 0 to
   // Lz (measure/particle_stress.hpp: there its sigma_zx averages to tau), or

@@ -32,6 +32,12 @@ CellOutcome outcome_of(const ShearCell& cell, bool interrupted) {
       outcome.max_overlap_body_i = static_cast<long long>(r.max_overlap_body_i);
       outcome.max_overlap_body_j = static_cast<long long>(r.max_overlap_body_j);
     }
+    if (r.contact_residual_max > outcome.contact_residual_max && r.contact_residual_step >= 0.0) {
+      outcome.contact_residual_max = r.contact_residual_max;
+      outcome.contact_residual_step = static_cast<long>(r.contact_residual_step);
+      outcome.contact_residual_body_i = static_cast<long long>(r.contact_residual_body_i);
+      outcome.contact_residual_body_j = static_cast<long long>(r.contact_residual_body_j);
+    }
   }
   outcome.overlap_tolerance = ShearCell::kOverlapTolerance * cell.config().cell()->radius_min;
   outcome.jammed = cell.state().jammed;

@@ -46,6 +46,10 @@ struct CellOutcome {
   double max_overlap = 0.0, overlap_tolerance = 0.0;
   long max_overlap_step = -1;
   long long max_overlap_body_i = -1, max_overlap_body_j = -1;
+  // The run's largest contact residual (solver/contact_residual.hpp) and where.
+  double contact_residual_max = 0.0;
+  long contact_residual_step = -1;
+  long long contact_residual_body_i = -1, contact_residual_body_j = -1;
   bool interrupted = false;
   bool jammed = false;
 };

@@ -14,11 +14,12 @@ namespace dilatant {
 
 namespace {
 
-// "DILATNT6": the Lees–Edwards boundary's drive (5: rows with the particle
+// "DILATNT7": rows with where the largest contact residual was (6: the
+// Lees–Edwards boundary's drive; 5: rows with the particle
 // stress tensor, the box's Lees–Edwards state; 4: rows with the fluid
 // forces' powers, geometry with phi_box; 3: rows with the contact residual;
 // 2: contact memory with regime)
-constexpr std::uint64_t kMagic = 0x36544e54414c4944ULL;
+constexpr std::uint64_t kMagic = 0x37544e54414c4944ULL;
 
 // One function serves both directions so the field order cannot diverge.
 template <class Archive, class State>

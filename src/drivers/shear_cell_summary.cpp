@@ -95,7 +95,11 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
       steady_average(s.rows, from, [](const FlowRow& r) { return r.power_kinetic; });
   double unconverged = 0.0, iterations = 0.0, steps = 0.0;
   double residual_max = 0.0, residual_rms = 0.0;
+  const FlowRow* worst = nullptr;  // the row holding the run's largest contact residual
   for (const FlowRow& r : s.rows) {
+    if (r.contact_residual_step >= 0.0 &&
+        (worst == nullptr || r.contact_residual_max > worst->contact_residual_max))
+      worst = &r;
     unconverged += r.unconverged_steps;
     iterations += r.mean_iterations * r.steps;
     steps += r.steps;
@@ -273,6 +277,16 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   // relative to the typical contact impulse.
   j["contact_residual_max"] = residual_max;
   j["contact_residual_rms"] = steps > 0.0 ? residual_rms / steps : 0.0;
+  // Where the worst was: the step and the contact's bodies (ids; a plane k as
+  // -(k+1)), so that a run that did not converge says where.
+  if (worst != nullptr) {
+    j["contact_residual_max_step"] = static_cast<long long>(worst->contact_residual_step);
+    j["contact_residual_max_bodies"] = {static_cast<long long>(worst->contact_residual_body_i),
+                                        static_cast<long long>(worst->contact_residual_body_j)};
+  } else {
+    j["contact_residual_max_step"] = nullptr;
+    j["contact_residual_max_bodies"] = nullptr;
+  }
   j["steady_samples"] = v.samples;
   j["wall_time_s"] = cost.wall_s;
   // The cost of this invocation (bench/ reads these; see measure/run_cost.hpp).

@@ -55,6 +55,9 @@ FlowRow IntervalSums::close(double t, double strain) const {
   r.unconverged_steps = unconverged;
   r.contact_residual_max = contact_residual_max;
   r.contact_residual_rms = contact_residual_rms / steps;
+  r.contact_residual_step = contact_residual_step;
+  r.contact_residual_body_i = contact_residual_body_i;
+  r.contact_residual_body_j = contact_residual_body_j;
   r.max_overlap = max_overlap;
   r.max_overlap_step = max_overlap_step;
   r.max_overlap_body_i = max_overlap_body_i;

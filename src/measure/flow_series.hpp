@@ -32,6 +32,9 @@ struct FlowRow {
   // relative to the typical contact impulse: the largest of any contact in any
   // step of the interval, and the step-mean of the RMS over contacts.
   double contact_residual_max = 0.0, contact_residual_rms = 0.0;
+  // Where the largest was: step and the contact's bodies (ids, as max_overlap's).
+  double contact_residual_step = -1.0, contact_residual_body_i = -1.0;
+  double contact_residual_body_j = -1.0;
   double phi_bulk = 0.0;     // central half of the gap, at the end of the interval
   double max_overlap = 0.0;  // largest overlap at the end of any step of the interval,
   // in this step, between these bodies (ids; a plane k as -(k+1), as contacts.csv)
@@ -57,6 +60,8 @@ struct IntervalSums {
   double sliding_bl = 0.0, sliding_hd = 0.0;
   double iterations = 0.0, max_residual = 0.0, steps = 0.0, unconverged = 0.0;
   double contact_residual_max = 0.0, contact_residual_rms = 0.0;  // max; sum over steps
+  double contact_residual_step = -1.0, contact_residual_body_i = -1.0;
+  double contact_residual_body_j = -1.0;
   double max_overlap = 0.0;
   double max_overlap_step = -1.0, max_overlap_body_i = -1.0, max_overlap_body_j = -1.0;
   double work_drive = 0.0, work_normal = 0.0, work_bl = 0.0, work_hd = 0.0;

@@ -15,19 +15,26 @@ struct Sums {
   double tangential_max = 0.0, tangential_squared = 0.0;
   double impulse_squared = 0.0;
   double loaded = 0.0;
+  double worst = 0.0;             // max(normal_max, tangential_max) ...
+  std::int32_t worst_index = -1;  // ... at this contact
 };
 
 template <class Law>
-void add_range(std::span<const Contact> contacts, const Bodies& b, const Law& law, double dt,
-               double max_push_out, Sums& s) {
+void add_range(std::span<const Contact> contacts, std::size_t first, const Bodies& b,
+               const Law& law, double dt, double max_push_out, Sums& s) {
   const double inv_dt = 1.0 / dt;
-  for (const Contact& c : contacts) {
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const Contact& c = contacts[k];
     const LocalAnswer a =
         solve_local(c, b, law, dt, inv_dt, 1.0, imposed_branch(c, true), max_push_out);
     const double dn = std::abs(a.p_n + a.p_lub - c.p_n - c.p_lub);
     const double dp_t = (a.p_t - c.p_t).norm();
     s.normal_max = std::max(s.normal_max, dn);
     s.tangential_max = std::max(s.tangential_max, dp_t);
+    if (std::max(dn, dp_t) > s.worst) {
+      s.worst = std::max(dn, dp_t);
+      s.worst_index = static_cast<std::int32_t>(first + k);
+    }
     s.normal_squared += dn * dn;
     s.tangential_squared += dp_t * dp_t;
     if (c.p_n > 0.0 || c.p_lub != 0.0) {
@@ -56,10 +63,16 @@ ContactResidual contact_residual(const std::vector<Contact>& contacts, const Sla
     const std::span<const Contact> boundary(contacts.data() + slabs.boundary_begin[ks],
                                             slabs.begin[ks + 1] - slabs.boundary_begin[ks]);
     Sums& slab = per_slab[ks];
-    std::visit([&](const auto& l) { add_range(particles, bodies, l, dt, max_push_out, slab); },
-               law);
-    std::visit([&](const auto& l) { add_range(boundary, bodies, l, dt, max_push_out, slab); },
-               boundary_law);
+    std::visit(
+        [&](const auto& l) {
+          add_range(particles, slabs.begin[ks], bodies, l, dt, max_push_out, slab);
+        },
+        law);
+    std::visit(
+        [&](const auto& l) {
+          add_range(boundary, slabs.boundary_begin[ks], bodies, l, dt, max_push_out, slab);
+        },
+        boundary_law);
   }
   Sums s;
   for (const Sums& slab : per_slab) {
@@ -69,9 +82,14 @@ ContactResidual contact_residual(const std::vector<Contact>& contacts, const Sla
     s.tangential_squared += slab.tangential_squared;
     s.impulse_squared += slab.impulse_squared;
     s.loaded += slab.loaded;
+    if (slab.worst > s.worst) {  // the first slab's on ties: the same for any thread count
+      s.worst = slab.worst;
+      s.worst_index = slab.worst_index;
+    }
   }
   ContactResidual r;
   if (contacts.empty()) return r;
+  r.worst_contact = s.worst_index;
   // No loaded contact: any change is measured against the changes themselves.
   const double typical = s.loaded > 0.0 ? std::sqrt(s.impulse_squared / s.loaded) : 0.0;
   if (typical <= 0.0) {

@@ -20,6 +20,7 @@
 // of 1e-3 means the worst contact is off by 0.1% of a typical contact impulse.
 // The solver's stopping test is still the relative change of one sweep
 // (solver/contact_solver.hpp); this is what that test buys.
+#include <cstdint>
 #include <vector>
 
 #include "friction/friction_law.hpp"
@@ -32,6 +33,9 @@ namespace dilatant {
 struct ContactResidual {
   double normal_max = 0.0, normal_rms = 0.0;
   double tangential_max = 0.0, tangential_rms = 0.0;
+  // The contact that holds max() (its index in the contacts), so that a step
+  // that did not converge names where (-1: no contacts, or none off at all).
+  std::int32_t worst_contact = -1;
   double max() const { return normal_max > tangential_max ? normal_max : tangential_max; }
 };
 

@@ -46,10 +46,10 @@ TEST(Checkpoint, AnOlderFormatIsNamedAsSuch) {
   {
     std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
     f.seekp(7);
-    f.put('5');  // "DILATNT5": the format before the Lees–Edwards boundary's drive
+    f.put('6');  // "DILATNT6": the format before rows located their largest contact residual
   }
-  EXPECT_NE(message_of(file).find("checkpoint of an older dilatant (format 5; this version reads "
-                                  "format 6)"),
+  EXPECT_NE(message_of(file).find("checkpoint of an older dilatant (format 6; this version reads "
+                                  "format 7)"),
             std::string::npos)
       << message_of(file);
   {

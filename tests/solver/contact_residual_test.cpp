@@ -80,11 +80,50 @@ TEST(ContactResidual, MeasuresTheDistanceToTheLocalAnswer) {
   EXPECT_LE(rt.normal_max, 1e-12);
 }
 
+// The contact that holds the largest residual is named (its index), also when
+// it lies in a later slab and the slabs are shared by threads: four spheres
+// resting apart on a plane, two of them pushed off their answers by 10% and 30%.
+TEST(ContactResidual, NamesTheContactThatHoldsTheLargest) {
+  World world;
+  world.planes.push_back(Plane{});
+  for (int k = 0; k < 4; ++k)
+    world.bodies.add_sphere(k, Vec3(3.0 * k, 0.0, 1.0), 1.0, 1.0, false, Vec3(0.5, 0.0, -kDt));
+  std::vector<Contact> contacts;
+  ContactDetector().detect(world, 0.1, contacts);
+  ASSERT_EQ(contacts.size(), 4u);
+  const CoulombLaw law{.mu0 = 0.2, .eta_f = 0.0};
+  solve_contacts(contacts, world.bodies, law, kDt, SolverSettings{.tolerance = 1e-14});
+  const auto push = [&](std::size_t k, double fraction) {
+    const double d = fraction * contacts[k].p_n;
+    contacts[k].p_n += d;
+    world.bodies.velocity[static_cast<std::size_t>(contacts[k].i)] +=
+        d * world.bodies.inv_mass[static_cast<std::size_t>(contacts[k].i)] * contacts[k].normal;
+  };
+  push(1, 0.1);
+  push(2, 0.3);
+  SlabPartition two;  // slab 0: contacts 0, 1; slab 1: contacts 2, 3
+  two.begin = {0, 2, 4};
+  two.boundary_begin = {2, 4};
+  for (const int threads : {1, 2}) {
+    const ContactResidual one_slab =
+        contact_residual(contacts, SlabPartition::single(4, 4), world.bodies, law, law, kDt);
+    const ContactResidual slabs =
+        contact_residual(contacts, two, world.bodies, law, law, kDt, threads);
+    EXPECT_EQ(one_slab.worst_contact, 2);
+    EXPECT_EQ(slabs.worst_contact, 2) << threads << " threads";
+    EXPECT_EQ(slabs.max(), one_slab.max());
+  }
+  push(0, 0.5);  // now the first slab's
+  EXPECT_EQ(contact_residual(contacts, two, world.bodies, law, law, kDt, 2).worst_contact, 0);
+}
+
 TEST(ContactResidual, NoContactsNoResidual) {
   const std::vector<Contact> none;
   Bodies b;
   const CoulombLaw law{};
-  EXPECT_EQ(contact_residual(none, SlabPartition::single(0, 0), b, law, law, kDt).max(), 0.0);
+  const ContactResidual r = contact_residual(none, SlabPartition::single(0, 0), b, law, law, kDt);
+  EXPECT_EQ(r.max(), 0.0);
+  EXPECT_EQ(r.worst_contact, -1);
 }
 
 }  // namespace

@@ -1,0 +1,67 @@
+// A run whose solver stops at solver.max_iterations is never silent about it
+// (docs/reliability.md): the CLI warns with the count of such steps and names
+// the step and the two bodies of the largest contact residual; summary.json
+// holds the same (contact_residual_max_step, contact_residual_max_bodies).
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <string>
+
+#include "app/cli_runner.hpp"
+
+namespace dilatant::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+RunResult run_cell(const CliDir& dir, const fs::path& out, const std::string& max_iterations) {
+  return dir.run({"run", "--out", out.string(), "--set", "cell.size=[6.0, 5.0, 7.0]", "--set",
+                  "run.strain=0.02", "--set", "run.transient_strain=0.01", "--set",
+                  "run.snapshot_interval=0", "--set", "solver.threads=1", "--set",
+                  "solver.max_iterations=" + max_iterations, "--quiet"});
+}
+
+TEST(UnconvergedRun, NamesTheStepAndTheContactOfTheLargestResidual) {
+  CliDir dir;
+  const fs::path out = dir.path() / "out";
+  // Three sweeps cannot solve a packing's contact network.
+  const RunResult r = run_cell(dir, out, "3");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json summary = nlohmann::json::parse(read_text(out / "summary.json"));
+  const long steps = summary["steps"].get<long>();
+  ASSERT_GT(summary["frac_steps_unconverged"].get<double>(), 0.0);
+  const long step = summary["contact_residual_max_step"].get<long>();
+  EXPECT_GE(step, 0);
+  EXPECT_LE(step, steps);
+  ASSERT_EQ(summary["contact_residual_max_bodies"].size(), 2u);
+  const long i = summary["contact_residual_max_bodies"][0].get<long>();
+  const long j = summary["contact_residual_max_bodies"][1].get<long>();
+  EXPECT_GE(i, 0);
+  EXPECT_NE(i, j);
+  EXPECT_GT(summary["contact_residual_max"].get<double>(), 1e-4);  // above solver.tolerance
+
+  // The warning: how many steps, then where the worst was, as the summary says.
+  EXPECT_NE(r.err.find("did not converge within solver.max_iterations = 3"), std::string::npos)
+      << r.err;
+  const std::regex where(
+      "the largest contact residual, [0-9.e+-]+ of a typical impulse, was at step ([0-9]+) "
+      "between body ([0-9]+) and (body|plane) (-?[0-9]+)");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.err, m, where)) << r.err;
+  EXPECT_EQ(std::stol(m[1]), step);
+  EXPECT_EQ(std::stol(m[2]), i);
+  EXPECT_EQ(std::stol(m[4]), m[3] == "plane" ? -j - 1 : j);
+
+  // A converged run says nothing, and its summary still locates its (small) worst.
+  const fs::path converged = dir.path() / "converged";
+  const RunResult c = run_cell(dir, converged, "10000");
+  ASSERT_EQ(c.exit_code, 0) << c.err;
+  EXPECT_EQ(c.err.find("contact residual"), std::string::npos) << c.err;
+  const nlohmann::json quiet = nlohmann::json::parse(read_text(converged / "summary.json"));
+  EXPECT_EQ(quiet["frac_steps_unconverged"].get<double>(), 0.0);
+  EXPECT_GE(quiet["contact_residual_max_step"].get<long>(), 0);
+}
+
+}  // namespace
+}  // namespace dilatant::test
