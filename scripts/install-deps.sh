@@ -14,6 +14,7 @@ packages=(
   openmpi-bin libopenmpi-dev                        # MPI sweeps (docs/cluster.md)
   clang-format                                      # formatting check (scripts/test.sh)
   clang libclang-rt-dev                             # libFuzzer targets (scripts/fuzz.sh)
+  libomp-dev                                        # LLVM OpenMP + Archer for TSan (scripts/tsan.sh)
 )
 packages+=("$@")
 

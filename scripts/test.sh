@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Everything CI checks, in order: dependencies, release build + tests, sanitizer
-# build + tests, fuzzing (30 s a reader), formatting. Later stages still run after a failure so one run
-# shows every problem; the exit status is non-zero if any stage failed.
+# build + tests, ThreadSanitizer, fuzzing (30 s a reader), formatting. Later
+# stages still run after a failure so one run shows every problem; the exit
+# status is non-zero if any stage failed.
 #   scripts/test.sh            (DILATANT_SKIP_DEPS=1 skips the apt step)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -41,6 +42,10 @@ if stage "sanitize build" bash scripts/build.sh sanitize; then
   stage "sanitize tests" ctest --test-dir build-sanitize --output-on-failure --no-tests=error \
     -j "$jobs" -E 'shear_cell_convergence|shear_cell_viscous|shear_cell_lees_edwards_mass' || true
 fi
+
+# ThreadSanitizer over the threaded suites (clang, LLVM's OpenMP with Archer;
+# docs/reliability.md "Sanitizers").
+stage "tsan" bash scripts/tsan.sh || true
 
 # The readers of user input under libFuzzer (clang, ASan + UBSan), 30 s each
 # from the committed seeds (docs/reliability.md "Fuzzing").
