@@ -7,7 +7,8 @@
 # s_c scaling),
 # copies their tables and figures into docs/paper-reproduction/<sweep>/
 # and writes docs/paper-reproduction/tables.md, control.png (Stribeck against
-# the coulomb control) and newtonian.png for docs/paper-reproduction.md.
+# the coulomb control), newtonian.png and lees-edwards/comparison.png (walls
+# against Lees–Edwards) for docs/paper-reproduction.md.
 # Hours on the 2-core machine (docs/sweeps.md "The paper's figures"); resumable:
 # run it again after an interruption and finished points are skipped.
 #   scripts/docs-paper.sh [dilatant sweep options...]   e.g. --jobs 2
@@ -67,6 +68,10 @@ if [[ -f $docs/dst-map/flowcurves.csv ]]; then
     if [[ -f $docs/$more/flowcurves.csv ]]; then maps+=("$docs/$more=25x10x27"); fi
   done
   /usr/bin/python3 scripts/dst_map.py "$docs/dst-map" dst_map "${maps[@]}"
+fi
+if [[ -f $docs/lees-edwards-fig2/flowcurves.csv || -f $docs/lees-edwards-dst/flowcurves.csv ]]; then
+  # Walls against Lees–Edwards (issue 16): table and figure in $docs/lees-edwards/.
+  /usr/bin/python3 scripts/lees_edwards_compare.py "$docs"
 fi
 if [[ " ${DILATANT_PAPER_SWEEPS:-$sweeps} " == *" sc-scaling "* && -f $docs/sc-scaling/flowcurves.csv ]]; then
   # The s_c scaling's two ramps from saved states (docs/paper-reproduction.md
