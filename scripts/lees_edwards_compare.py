@@ -10,7 +10,7 @@ Reads DOCS/{fig2,lees-edwards-fig2,dst-map,dst-size,lees-edwards-dst}/flowcurves
 comparison.csv (one row per wall/Lees–Edwards pair of points: eta, bulk
 fraction, inertial number, P_BL, jammed) and comparison.png/.svg (eta against
 lambda, walls filled, Lees–Edwards open; crosses mark jams). Points not run yet
-are left out and counted on stderr: the script runs on partial sweeps.
+are left out and counted: the script runs on partial sweeps.
 """
 import csv
 import math
@@ -159,7 +159,7 @@ def main():
     n = write_table(pairs, out_dir / "comparison.csv")
     unpaired = sum(1 for v in pairs.values() if len(v) < 2)
     print(f"lees_edwards_compare: {n} pairs in {out_dir / 'comparison.csv'}"
-          f"{f'; {unpaired} points without their pair (not run yet)' if unpaired else ''}")
+          f"{f'; {unpaired} points without a counterpart (not run, or skipped after a jam)' if unpaired else ''}")
     plot(pairs, out_dir)
 
 
