@@ -9,23 +9,36 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 jobs=$(nproc)
 failed=()
-# stage NAME COMMAND...: runs COMMAND, records NAME if it fails, returns its status.
+# Each stage's wall time, for the table printed at the end (build/test-report.md).
+mkdir -p build
+times=build/test-stages.tsv
+: >"$times"
+# stage NAME COMMAND...: runs COMMAND, records its wall time, and NAME if it
+# fails; returns its status.
 stage() {
-  local name=$1
+  local name=$1 start=$SECONDS status=0
   shift
   echo "=== test.sh: $name"
-  if "$@"; then return 0; fi
+  "$@" || status=$?
+  printf '%s\t%s\t%s\n' "$name" $((SECONDS - start)) "$( ((status == 0)) && echo ok || echo FAILED)" >>"$times"
+  if ((status == 0)); then return 0; fi
   failed+=("$name")
   echo "=== test.sh: $name FAILED" >&2
   return 1
 }
+# ctest's output kept for the report (ctest's own per-test timing).
+ctest_logged() {
+  local log=$1
+  shift
+  ctest "$@" 2>&1 | tee "$log"
+}
 
-bash scripts/install-deps.sh
+stage "packages" bash scripts/install-deps.sh || exit 1
 # install-deps.sh installed matplotlib: the CLI tests must see the figures drawn.
 export DILATANT_REQUIRE_PLOTS=1
 
 if stage "release build" bash scripts/build.sh release; then
-  stage "release tests" ctest --test-dir build --output-on-failure --no-tests=error -j "$jobs" || true
+  stage "release tests" ctest_logged build/ctest.log --test-dir build --output-on-failure --no-tests=error -j "$jobs" || true
 fi
 
 # Stop at the first sanitizer report. detect_leaks=1 is checked to work here: at exit
@@ -39,7 +52,7 @@ if stage "sanitize build" bash scripts/build.sh sanitize; then
   # shear_cell_lees_edwards_mass) run the
   # same code as the short cell tests, only longer; under the sanitizers they
   # would take ~10x their 1-2 minutes for no new coverage: Release only.
-  stage "sanitize tests" ctest --test-dir build-sanitize --output-on-failure --no-tests=error \
+  stage "sanitize tests" ctest_logged build-sanitize/ctest.log --test-dir build-sanitize --output-on-failure --no-tests=error \
     -j "$jobs" -E 'shear_cell_convergence|shear_cell_viscous|shear_cell_lees_edwards_mass' || true
 fi
 
@@ -58,6 +71,11 @@ format_check() {
 stage "clang-format" format_check || true
 # Every folder of src/ includes only lower layers (docs/architecture.md).
 stage "layers" python3 scripts/check-layers.py src || true
+
+python3 scripts/test_report.py "$times" release=build/ctest.log sanitize=build-sanitize/ctest.log \
+  tsan=build-tsan/tsan.log >build/test-report.md || true
+echo "=== test.sh: wall time per stage, slowest tests (build/test-report.md)"
+cat build/test-report.md
 
 if ((${#failed[@]} > 0)); then
   printf '=== test.sh: FAILED: %s\n' "$(IFS=,; echo "${failed[*]}")" >&2
