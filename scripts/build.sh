@@ -1,19 +1,31 @@
 #!/usr/bin/env bash
 # Configures and builds dilatant with Ninja on all cores.
 #   scripts/build.sh [release|sanitize|tsan] [target...]   (default: release, all targets)
-#     release  -> build/           Release; CLI, tests, benchmarks, Python module (build/python)
-#     sanitize -> build-sanitize/  RelWithDebInfo with ASan + UBSan; no benchmarks, no
-#                                  Python module (an ASan extension loads only with LD_PRELOAD),
-#                                  no MPI (LeakSanitizer reports Open MPI's own ~120 kB of
-#                                  allocations left at MPI_Finalize, even for an empty
-#                                  program; docs/cluster.md): the MPI tests skip there
-#     tsan     -> build-tsan/      RelWithDebInfo with ThreadSanitizer, clang (OpenMP is
-#                                  then LLVM's libomp, whose Archer tool tells TSan about
-#                                  OpenMP's barriers; scripts/tsan.sh runs it); no
-#                                  benchmarks, no Python module, no MPI (as sanitize)
+#     release  -> build/           Release (g++, warnings are errors); CLI, tests,
+#                                  benchmarks, Python module (build/python)
+#     sanitize -> build-sanitize/  ASan + UBSan (clang); the CLI, the tests and the
+#                                  libFuzzer targets (scripts/fuzz.sh) in one tree:
+#                                  the library and the fuzz harness also carry
+#                                  libFuzzer's coverage. No benchmarks, no Python
+#                                  module (an ASan extension loads only with
+#                                  LD_PRELOAD), no MPI (LeakSanitizer reports Open
+#                                  MPI's own ~120 kB of allocations left at
+#                                  MPI_Finalize, even for an empty program;
+#                                  docs/cluster.md): the MPI tests skip there
+#     tsan     -> build-tsan/      ThreadSanitizer (clang; OpenMP is then LLVM's
+#                                  libomp, whose Archer tool tells TSan about OpenMP's
+#                                  barriers; scripts/tsan.sh runs it); the CLI and
+#                                  the threaded suites' executable only are meant
+#                                  to be built there (scripts/tsan.sh names them)
+# The sanitizer trees build with -O1 and line tables only: what a sanitizer
+# report needs (file:line in every frame), at a fraction of full -g's compile
+# time. Warnings are g++'s business (release); clang's differ in detail.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
+sanitizer_tree=(-DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo
+  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only" -DDILATANT_WERROR=OFF
+  -DDILATANT_BUILD_BENCHMARKS=OFF -DDILATANT_BUILD_PYTHON=OFF -DDILATANT_WITH_MPI=OFF)
 case "${1:-release}" in
   release)
     dir=build
@@ -22,15 +34,11 @@ case "${1:-release}" in
     ;;
   sanitize)
     dir=build-sanitize
-    options=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DDILATANT_SANITIZE=ON
-      -DDILATANT_BUILD_BENCHMARKS=OFF -DDILATANT_BUILD_PYTHON=OFF -DDILATANT_WITH_MPI=OFF)
+    options=("${sanitizer_tree[@]}" -DDILATANT_SANITIZE=ON -DDILATANT_BUILD_FUZZERS=ON)
     ;;
   tsan)
     dir=build-tsan
-    # Warnings are g++'s business (release, sanitize); clang's differ in detail.
-    options=(-DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDILATANT_TSAN=ON
-      -DDILATANT_WERROR=OFF -DDILATANT_BUILD_BENCHMARKS=OFF -DDILATANT_BUILD_PYTHON=OFF
-      -DDILATANT_WITH_MPI=OFF)
+    options=("${sanitizer_tree[@]}" -DDILATANT_TSAN=ON)
     ;;
   *)
     echo "usage: $0 [release|sanitize|tsan] [target...]" >&2

@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
-# Everything CI checks, in order: dependencies, release build + tests, sanitizer
-# build + tests, ThreadSanitizer, fuzzing (30 s a reader), formatting. Later
-# stages still run after a failure so one run shows every problem; the exit
-# status is non-zero if any stage failed.
+# Everything CI checks, in order: packages, release build + tests, sanitizer
+# build (ASan + UBSan, which also holds the fuzz targets) + tests,
+# ThreadSanitizer, fuzzing (30 s a reader), formatting, layers. Later stages
+# still run after a failure so one run shows every problem; the exit status is
+# non-zero if any stage failed. At the end: each stage's wall time and the
+# slowest tests (build/test-report.md). docs/testing.md says what each stage
+# checks and why.
 #   scripts/test.sh            (DILATANT_SKIP_DEPS=1 skips the apt step)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -26,11 +29,21 @@ stage() {
   echo "=== test.sh: $name FAILED" >&2
   return 1
 }
-# ctest's output kept for the report (ctest's own per-test timing).
+# ctest_logged TREE COSTS [ARGS...]: ctest in TREE, its output kept for the
+# report (ctest's own per-test timing). ctest starts the tests it knows to be
+# longest first, from the times it recorded in the tree; a fresh tree has none,
+# and the long ones would start last and run alone at the end. So a fresh tree
+# gets the committed times of a reference run (tests/ctest-costs/COSTS.txt;
+# refresh: copy TREE/Testing/Temporary/CTestCostData.txt there, without the
+# failed-test list after its "---").
 ctest_logged() {
-  local log=$1
-  shift
-  ctest "$@" 2>&1 | tee "$log"
+  local tree=$1 costs=tests/ctest-costs/$2.txt
+  shift 2
+  mkdir -p "$tree/Testing/Temporary"
+  if [[ ! -f $tree/Testing/Temporary/CTestCostData.txt ]]; then
+    cp "$costs" "$tree/Testing/Temporary/CTestCostData.txt"
+  fi
+  ctest --test-dir "$tree" "$@" 2>&1 | tee "$tree/ctest.log"
 }
 
 stage "packages" bash scripts/install-deps.sh || exit 1
@@ -38,7 +51,7 @@ stage "packages" bash scripts/install-deps.sh || exit 1
 export DILATANT_REQUIRE_PLOTS=1
 
 if stage "release build" bash scripts/build.sh release; then
-  stage "release tests" ctest_logged build/ctest.log --test-dir build --output-on-failure --no-tests=error -j "$jobs" || true
+  stage "release tests" ctest_logged build release --output-on-failure --no-tests=error -j "$jobs" || true
 fi
 
 # Stop at the first sanitizer report. detect_leaks=1 is checked to work here: at exit
@@ -52,7 +65,7 @@ if stage "sanitize build" bash scripts/build.sh sanitize; then
   # shear_cell_lees_edwards_mass) run the
   # same code as the short cell tests, only longer; under the sanitizers they
   # would take ~10x their 1-2 minutes for no new coverage: Release only.
-  stage "sanitize tests" ctest_logged build-sanitize/ctest.log --test-dir build-sanitize --output-on-failure --no-tests=error \
+  stage "sanitize tests" ctest_logged build-sanitize sanitize --output-on-failure --no-tests=error \
     -j "$jobs" -E 'shear_cell_convergence|shear_cell_viscous|shear_cell_lees_edwards_mass' || true
 fi
 

@@ -4,8 +4,10 @@
 # 2 where a test compares thread counts, 3 in the numerical-fault tests) and the
 # sweep's worker threads (jobs = 2, in the test process and in the CLI the tests
 # start). Builds build-tsan/ (scripts/build.sh
-# tsan: clang, LLVM's libomp) and runs the suites below in one process each,
-# stopping at the first report (docs/reliability.md "Sanitizers").
+# tsan: clang, LLVM's libomp), only the CLI and the executable of the threaded
+# suites' files (tests/CMakeLists.txt, dilatant_threaded_tests), and runs the
+# suites below in one process, stopping at the first report
+# (docs/reliability.md "Sanitizers").
 #   scripts/tsan.sh [GTEST_FILTER]
 # OpenMP's barriers are invisible to TSan unless LLVM's Archer tool is loaded
 # into libomp: OMP_TOOL_LIBRARIES names it, and the run fails unless Archer says
@@ -23,7 +25,18 @@ default_filter=$(printf '%s.*:' "${suites[@]}")
 filter=${1:-${default_filter%:}}
 
 bash scripts/install-deps.sh
-bash scripts/build.sh tsan dilatant dilatant_tests
+bash scripts/build.sh tsan dilatant dilatant_threaded_tests
+tests=build-tsan/tests/dilatant_threaded_tests
+
+# Every suite named here must be in that executable: a suite whose file is
+# missing from its list would otherwise pass by running nothing.
+listed=$("$tests" --gtest_list_tests)
+for suite in "${suites[@]}"; do
+  if ! grep -qE "^$suite\.\$" <<<"$listed"; then
+    echo "tsan.sh: suite $suite is not in $tests: add its file to tests/CMakeLists.txt" >&2
+    exit 1
+  fi
+done
 
 llvm_lib=$(dirname "$(readlink -f "$(command -v clang++)")")/../lib
 archer=$(readlink -f "$llvm_lib/libarcher.so")
@@ -42,7 +55,7 @@ export TSAN_OPTIONS=halt_on_error=1:exitcode=66:second_deadlock_stack=1:ignore_n
 # only here: the CLI tests want an empty stderr.)
 probe=ShearCellRun.TwoThreadsGiveTheSameBitsAsOne
 mkdir -p build-tsan
-ARCHER_OPTIONS=verbose=1 build-tsan/tests/dilatant_tests --gtest_filter="$probe" \
+ARCHER_OPTIONS=verbose=1 "$tests" --gtest_filter="$probe" \
   >build-tsan/archer-probe.log 2>&1 || true
 if ! grep -q "Archer detected OpenMP application" build-tsan/archer-probe.log; then
   echo "tsan.sh: Archer did not load into libomp ($archer): OpenMP barriers would be unseen" >&2
@@ -64,7 +77,7 @@ fi
 log=build-tsan/tsan.log
 echo "=== tsan.sh: $filter"
 status=0
-build-tsan/tests/dilatant_tests --gtest_filter="$filter" >"$log" 2>&1 || status=$?
+"$tests" --gtest_filter="$filter" >"$log" 2>&1 || status=$?
 grep -E "^\[ *(OK|FAILED|PASSED) *\]" "$log" || true
 if grep -q "WARNING: ThreadSanitizer" "$log"; then
   grep -A30 "WARNING: ThreadSanitizer" "$log" | head -40 >&2
