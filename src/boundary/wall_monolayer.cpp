@@ -11,7 +11,11 @@ std::vector<WallSphere> random_monolayer(double lx, double ly, double z0, double
   // A plain O(N) scan per attempt: a wall holds ~100 discs, so this costs
   // milliseconds and keeps the adsorption rule obvious.
   for (int failures = 0; failures < kSaturationAttempts;) {
-    const Vec3 x(ux(rng), uy(rng), z0);
+    // Sequenced draws: the order of function arguments is unspecified (g++
+    // drew y first, clang x). y first keeps the configurations seeds gave.
+    const double py = uy(rng);
+    const double px = ux(rng);
+    const Vec3 x(px, py, z0);
     const double r = ur(rng);
     bool free = true;
     for (const WallSphere& s : wall) {

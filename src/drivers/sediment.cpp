@@ -41,8 +41,12 @@ World suspension(const SedimentSettings& s) {
     const double v = 4.0 / 3.0 * std::numbers::pi * r * r * r;
     if (volume + v > target) break;
     volume += v;
-    world.bodies.add_sphere(static_cast<std::int64_t>(world.bodies.size()),
-                            Vec3(ux(rng), uy(rng), uz(rng)), r, 1.0, false);
+    // Sequenced draws (argument order is unspecified; g++ drew z, y, x).
+    const double pz = uz(rng);
+    const double py = uy(rng);
+    const double px = ux(rng);
+    world.bodies.add_sphere(static_cast<std::int64_t>(world.bodies.size()), Vec3(px, py, pz), r,
+                            1.0, false);
   }
   const double initial_scale = std::min(1.0, std::cbrt(0.2 / s.phi_initial));
   const GrowthReport growth = grow_to_full_size(world, 0, initial_scale);

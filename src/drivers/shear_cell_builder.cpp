@@ -58,8 +58,12 @@ double add_mobile_spheres(const Config& config, double counted_height, double z_
   geometry.mobile_count = radii.size();
   std::uniform_real_distribution<double> ux(0.0, lx), uy(0.0, ly), uz(z_lo, z_hi);
   for (double r : radii) {
-    world.bodies.add_sphere(static_cast<std::int64_t>(world.bodies.size()),
-                            Vec3(ux(rng), uy(rng), uz(rng)), r, config.density, false);
+    // Sequenced draws (argument order is unspecified; g++ drew z, y, x).
+    const double pz = uz(rng);
+    const double py = uy(rng);
+    const double px = ux(rng);
+    world.bodies.add_sphere(static_cast<std::int64_t>(world.bodies.size()), Vec3(px, py, pz), r,
+                            config.density, false);
     group.push_back(BodyGroup::Particle);
   }
 

@@ -23,10 +23,17 @@ inline std::filesystem::path cell_run_dir(const std::string& name) {
 
 // Runs the default cell with `overrides` into `dir` (emptied first) and
 // returns its summary.json; the folder's other files stay for the caller.
+// On one thread unless `overrides` says otherwise: results do not depend on the
+// thread count (ShearCellRun.TwoThreadsGiveTheSameBitsAsOne), and ctest runs
+// one test per core, so a two-thread cell beside another test would have four
+// threads on two cores, each OpenMP barrier then waiting for a thread that is
+// not running.
 inline nlohmann::json run_cell_in(const std::filesystem::path& dir,
                                   const std::vector<std::string>& overrides) {
   std::filesystem::remove_all(dir);
-  run_shear_cell(default_cell_config(overrides),
+  std::vector<std::string> one_thread_first = {"solver.threads=1"};
+  one_thread_first.insert(one_thread_first.end(), overrides.begin(), overrides.end());
+  run_shear_cell(default_cell_config(one_thread_first),
                  CellRunOptions{RunOptions{dir, true}, false, nullptr});
   std::ifstream in(dir / "summary.json");
   return nlohmann::json::parse(in);
@@ -42,7 +49,28 @@ inline nlohmann::json run_cell_summary(const std::string& name,
 
 // Shear-cell results are compared over several seeds: on small cells one run's
 // block error bar understates the run-to-run scatter.
-inline constexpr int kSeeds = 4;
+//
+// How many seeds, and how long (docs/testing.md "Sizing the seed-averaged
+// suites"; measured with scripts/seed_scatter.py, 12 seeds of 10 strain of the
+// 8 x 5 x 9 cell, the literal model): a test comparing two settings' seed
+// means fails beyond 3 combined standard errors, 3 sqrt(2/n) s(T) with n seeds
+// averaged over T strain each, s(T) the relative scatter between seeds. It
+// catches a relative shift delta at three standard errors when
+// n >= 18 s(T)^2 / delta^2. Each run adds 2 strain of transient.
+//
+// Between walls (lambda 1) s does NOT fall with the window: s(T) = 0.154,
+// 0.167, 0.139, 0.141 for gamma_dot (so eta) over T = 1, 2, 4, 8, and 0.13-0.25
+// for P_BL; each seed's packing keeps its own mean. Only seeds narrow a seed
+// mean, so the wall cell's suites run kSeeds = 7 seeds of T = 2: delta = 27%
+// for eta, 32% for P_BL (s = 0.198 at T = 2). In the Lees–Edwards cell s falls
+// as 1/sqrt(T) (0.306, 0.188, 0.132, 0.107: s^2 T = 0.07), and the fewest
+// seeds of the longest runs cost least: 4 seeds of T = 4 (lees_edwards_flow_test.cpp).
+// A 5% shift would need 141 seeds a setting between walls (about 20
+// CPU-minutes a setting), 500 strain in the Lees–Edwards cell: beyond CI; see
+// each suite for what it exists to catch.
+inline constexpr int kSeeds = 7;
+inline constexpr double kSeedWindow = 2.0;
+inline constexpr double kSeedTransient = 2.0;
 
 struct SeedMean {
   double mean = 0.0;
@@ -64,12 +92,16 @@ inline SeedMean seed_mean(const std::vector<nlohmann::json>& runs, const std::st
   return m;
 }
 
-// One run per seed 1..kSeeds of the default cell with `overrides`.
+// One run per seed 1..seeds of the default cell with `overrides`, each of
+// kSeedTransient + window strain (overriding any run length in `overrides`).
 inline std::vector<nlohmann::json> run_cell_seeds(const std::string& name,
-                                                  const std::vector<std::string>& overrides) {
+                                                  const std::vector<std::string>& overrides,
+                                                  int seeds = kSeeds, double window = kSeedWindow) {
   std::vector<nlohmann::json> runs;
-  for (int seed = 1; seed <= kSeeds; ++seed) {
+  for (int seed = 1; seed <= seeds; ++seed) {
     std::vector<std::string> o = overrides;
+    o.push_back("run.strain=" + std::to_string(kSeedTransient + window));
+    o.push_back("run.transient_strain=" + std::to_string(kSeedTransient));
     o.push_back("cell.seed=" + std::to_string(seed));
     runs.push_back(run_cell_summary(name + "_s" + std::to_string(seed), o));
   }

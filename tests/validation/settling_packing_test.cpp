@@ -87,8 +87,11 @@ World make_loose_packing() {
   for (int k = 0; k < kMobile; ++k) {
     const double r = radii[static_cast<std::size_t>(k)];
     for (;;) {
-      const Vec3 x(kL * uniform(rng), kL * uniform(rng),
-                   2.0 * kFloorR + r + (kHeight - 2.0 * r) * uniform(rng));
+      // Sequenced draws (argument order is unspecified; g++ drew z, y, x).
+      const double uz = uniform(rng);
+      const double uy = uniform(rng);
+      const double ux = uniform(rng);
+      const Vec3 x(kL * ux, kL * uy, 2.0 * kFloorR + r + (kHeight - 2.0 * r) * uz);
       bool free = true;
       for (std::size_t j = 0; j < world.bodies.size() && free; ++j) {
         free = world.box.minimum_image(x, world.bodies.position[j]).norm() >
