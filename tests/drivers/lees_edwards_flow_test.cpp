@@ -144,8 +144,8 @@ TEST_F(LeesEdwardsSteadyShear, EnergyFedByTheImagesIsDissipatedInTheContacts) {
 // understates the scatter: cell_run_helpers.hpp). Measured: 0.142 +- 0.010 at
 // M/4, 0.134 +- 0.011 at 4 M (0.6 combined errors apart).
 // Size: here the seeds' scatter falls as 1/sqrt(T) (s^2 T = 0.07 for gamma_dot,
-// scripts/seed_scatter.py, 12 seeds of 10 strain): 4 seeds of 2 + 4 strain
-// catch a dependence on the mass of 28% at three combined standard errors, a
+// scripts/seed_scatter.py, 12 seeds of 10 strain): kSeeds = 4 seeds of 2 + 4
+// strain catch a dependence on the mass of 28% at three combined standard errors, a
 // gross fault of the feedback (a mass that set the steady state); a 5% one
 // would need 500 strain a setting (docs/testing.md).
 TEST(LeesEdwardsMass, SteadyStateDoesNotDependOnTheBoundaryMass) {
@@ -153,7 +153,7 @@ TEST(LeesEdwardsMass, SteadyStateDoesNotDependOnTheBoundaryMass) {
   const auto runs = [&](const std::string& name, double mass) {
     std::vector<std::string> o = kCell;
     o.push_back("cell.boundary_mass=" + std::to_string(mass));
-    return testing::run_cell_seeds(name, o, 4, 4.0);
+    return testing::run_cell_seeds(name, o);
   };
   const auto light = testing::seed_mean(runs("le_light", 0.25 * m), "gamma_dot");
   const auto heavy = testing::seed_mean(runs("le_heavy", 4.0 * m), "gamma_dot");

@@ -9,11 +9,11 @@
 // 0.50). The error of a mean is the larger of the seed scatter and the block
 // errors.
 //
-// Size (cell_run_helpers.hpp): 7 seeds of 2 + 2 strain catch, at three
-// combined standard errors, shifts of 27% in eta and 32% in P_BL: the fault
+// Size (cell_run_helpers.hpp): 4 seeds of 2 + 4 strain catch, at three
+// combined standard errors, shifts of 29% in eta and 27% in P_BL: the fault
 // below (P_BL -34%) is caught by P_BL; its eta shift (-17%) alone would need
-// 13 seeds, and a 5% shift 141. The tolerance check is sized alike: it catches
-// a tolerance bias of 27% in eta, 32% in P_BL; smaller ones are
+// 12 seeds, and a 5% shift 141. The tolerance check is sized alike: it catches
+// a tolerance bias of 29% in eta, 27% in P_BL; smaller ones are
 // bench/accuracy_guard.sh's business (seed means on the paper's cell).
 //
 // The time-step check guards the continuity of the HD branch

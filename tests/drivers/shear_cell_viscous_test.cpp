@@ -7,11 +7,11 @@
 //
 // Size (cell_run_helpers.hpp): at lambda 0.3 the seeds scatter more than at
 // lambda 1: s = 0.31 for gamma_dot averaged over 1 or 2 strain, 0.26 over 4,
-// 0.24 over 8 (scripts/seed_scatter.py, 12 seeds of 10 strain, mu0 0.1). So 7
-// seeds of 2 + 2 strain catch a mu0 dependence of 50% of eta at three combined
+// 0.24 over 8 (scripts/seed_scatter.py, 12 seeds of 10 strain, mu0 0.1). So 4
+// seeds of 2 + 4 strain catch a mu0 dependence of 55% of eta at three combined
 // standard errors: a guard against mu0 acting through unlubricated contacts,
-// not a measurement of a small one; a 5% dependence would need 690 seeds a
-// setting (s = 0.31; docs/testing.md).
+// not a measurement of a small one; a 5% dependence would need 490 seeds a
+// setting (s = 0.26; docs/testing.md).
 //
 // Not tested, because it does not hold in the model as specified: eta
 // independent of lambda. eta keeps falling with lambda down to 0.01
