@@ -12,7 +12,7 @@ the tables of reference runs); scripts/test.sh writes it to build/test-report.md
 import re
 import sys
 
-CTEST_LINE = re.compile(r"^\s*\d+/\d+ Test\s+#\d+: (\S+) \.*\**\s*(\w[\w ]*?)\s+([0-9.]+) sec")
+CTEST_LINE = re.compile(r"^\s*\d+/\d+ Test\s+#\d+: (.+?) \.+\**\s*(\w[\w ]*?)\s+([0-9.]+) sec")
 GTEST_LINE = re.compile(r"^\[\s+(OK|FAILED)\s+\] (\S+) \((\d+) ms\)")
 SLOWEST = 15
 
