@@ -69,6 +69,25 @@ if stage "sanitize build" bash scripts/build.sh sanitize; then
     -j "$jobs" -E 'shear_cell_convergence|shear_cell_viscous|shear_cell_lees_edwards_mass' || true
 fi
 
+# The sanitizer tree leaves three UBSan checks out of Eigen's headers
+# (cmake/ubsan-ignorelist.txt); the probe shows each fault they guarded still
+# reported with the tree's own flags (tests/sanitize/eigen_ignorelist_probe.cpp).
+ignorelist_probe() {
+  local exe=build-sanitize/eigen_ignorelist_probe fault
+  clang++ -std=c++20 -O1 -gline-tables-only -isystem /usr/include/eigen3 \
+    -fsanitize=address,undefined -fno-sanitize-recover=all \
+    -fsanitize-ignorelist=cmake/ubsan-ignorelist.txt tests/sanitize/eigen_ignorelist_probe.cpp -o "$exe"
+  for fault in 1 2 3 4; do
+    if ("$exe" "$fault") 2>"$exe.$fault.log" ||
+      ! grep -qE "runtime error|ERROR: AddressSanitizer|Assertion" "$exe.$fault.log"; then
+      echo "ignorelist probe: fault $fault was not reported ($exe.$fault.log)" >&2
+      return 1
+    fi
+  done
+  echo "ignorelist probe: the four faults reported"
+}
+stage "sanitize probe" ignorelist_probe || true
+
 # ThreadSanitizer over the threaded suites (clang, LLVM's OpenMP with Archer;
 # docs/reliability.md "Sanitizers").
 stage "tsan" bash scripts/tsan.sh || true
