@@ -4,6 +4,8 @@
 #include <array>
 #include <utility>
 
+#include "io/text.hpp"
+
 namespace dilatant::analysis {
 namespace {
 
@@ -59,12 +61,6 @@ constexpr std::array kUnits = {
     Unit{"cP", Quantity::Viscosity, 1e-3},       Unit{"cp", Quantity::Viscosity, 1e-3},
     Unit{"P", Quantity::Viscosity, 0.1},
 };
-
-std::string_view trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t");
-  if (first == std::string_view::npos) return {};
-  return s.substr(first, s.find_last_not_of(" \t") - first + 1);
-}
 
 std::string normalise_name(std::string_view name) {
   std::string out;

@@ -1,13 +1,9 @@
 #include "analysis/delimited_text.hpp"
 
-#include <fmt/format.h>
-
 #include <charconv>
 #include <cstdint>
-#include <fstream>
-#include <iterator>
 
-#include "io/input_error.hpp"
+#include "io/text.hpp"
 
 namespace dilatant::analysis {
 namespace {
@@ -52,21 +48,10 @@ std::string utf16_to_utf8(std::string_view bytes, bool little_endian) {
   return out;
 }
 
-std::string_view trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\r");
-  if (first == std::string_view::npos) return {};
-  return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
-}
-
 }  // namespace
 
 std::vector<std::string> read_text_lines(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in || std::filesystem::is_directory(file))
-    throw InputError(
-        fmt::format("{}: cannot read the file ({})", file.string(),
-                    std::filesystem::exists(file) ? "not a readable file" : "no such file"));
-  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const std::string bytes = read_input_file(file, "file");
   std::string text;
   if (bytes.starts_with("\xFF\xFE")) {
     text = utf16_to_utf8(std::string_view(bytes).substr(2), true);

@@ -4,12 +4,11 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
 #include "analysis/analysis_input.hpp"
 #include "analysis/flow_curve_csv.hpp"
 #include "io/input_error.hpp"
+#include "io/text.hpp"
 
 namespace dilatant::analysis {
 namespace {
@@ -145,16 +144,10 @@ class ManifestReader {
 
 AnalysisInput read_manifest(const std::filesystem::path& manifest) {
   const std::string source = manifest.string();
-  std::ifstream in(manifest, std::ios::binary);
-  if (!in || std::filesystem::is_directory(manifest))
-    throw InputError(
-        fmt::format("{}: cannot read the manifest ({})", source,
-                    std::filesystem::exists(manifest) ? "not a readable file" : "no such file"));
-  std::ostringstream text;
-  text << in.rdbuf();
+  const std::string contents = read_input_file(manifest, "manifest");
   toml::table root;
   try {
-    root = toml::parse(text.str(), source);
+    root = toml::parse(contents, source);
   } catch (const toml::parse_error& e) {
     throw InputError(fmt::format("{}:{}:{}: invalid TOML: {}", source, e.source().begin.line,
                                  e.source().begin.column, e.description()));

@@ -1,8 +1,8 @@
 #pragma once
 // Walls that never move: bodies of infinite mass (glued spheres) whose contacts
 // obey a law of their own, and no degree of freedom to solve. The packing
-// growth sees the shear cell's walls this way before the top wall is set free,
-// and a container's floor (a sediment under gravity) is this boundary.
+// growth (drivers/packing_growth.cpp) sees the shear cell's walls this way
+// before the top wall is set free.
 #include <utility>
 #include <vector>
 

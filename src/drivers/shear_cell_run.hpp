@@ -1,6 +1,7 @@
 #pragma once
-// Runs the stress-controlled shear cell (drivers/shear_cell.hpp) to run.strain
-// (or until it jams) and writes its results folder (docs/shear-cell.md):
+// Runs the shear cell (drivers/shear_cell.hpp; stress control, or rate control
+// in the Lees-Edwards box) to run.strain (or until it jams) and writes its
+// results folder (docs/shear-cell.md):
 //   config.toml, summary.json, timeseries.csv, velocity_profile.csv,
 //   sommerfeld_hist.csv, contacts.csv, checkpoint.bin, snapshots/*.vtp + cell.pvd
 //

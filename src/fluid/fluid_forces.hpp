@@ -1,6 +1,6 @@
 #pragma once
-// Forces of the fluid that depend on the bodies' velocities (Stokes drag, and
-// later squeeze-film lubrication), and where they enter the time step.
+// Forces of the fluid that depend on the bodies' velocities (Stokes drag and
+// squeeze-film lubrication), and where they enter the time step.
 //
 // Such forces are stiff: a drag time m/zeta far below dt would make an explicit
 // update blow up. They are therefore taken implicitly, linear in the

@@ -12,7 +12,7 @@
 // Exactly one of [cell] (the paper's shear cell), [scene] (particles from a
 // CSV file, for validation and teaching) and [sediment] (`dilatant jam`) must
 // be present: it is the run mode.
-// Keys that belong to the other mode are errors. Numbers must be finite;
+// Keys that belong to another mode are errors. Numbers must be finite;
 // integers are accepted where a float is expected; unknown keys and
 // out-of-range values are errors (InputError).
 #include <toml++/toml.h>
@@ -131,7 +131,7 @@ struct RunConfig {
 };
 
 struct Config {
-  // The run mode: the paper's shear cell or a scene.
+  // The run mode: the paper's shear cell, a scene or a sediment.
   std::variant<CellConfig, SceneConfig, SedimentConfig> mode;
   double density = 1.0;  // [particles] density
   FrictionConfig friction;
@@ -141,7 +141,7 @@ struct Config {
   std::string source;    // file name used in messages ("<built-in>" for the default)
   toml::table resolved;  // every key with defaults filled in (= to_toml(*this) on load)
 
-  // The mode's section, or null in the other mode.
+  // The mode's section, or null in the other modes.
   const CellConfig* cell() const { return std::get_if<CellConfig>(&mode); }
   CellConfig* cell() { return std::get_if<CellConfig>(&mode); }
   const SceneConfig* scene() const { return std::get_if<SceneConfig>(&mode); }

@@ -5,15 +5,10 @@
 #include "io/config_detail.hpp"
 #include "io/config_keys.hpp"
 #include "io/input_error.hpp"
+#include "io/text.hpp"
 
 namespace dilatant::config_detail {
 namespace {
-
-std::string_view trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\r\n");
-  if (first == std::string_view::npos) return {};
-  return s.substr(first, s.find_last_not_of(" \t\r\n") - first + 1);
-}
 
 std::vector<std::string> split_key(std::string_view key) {
   std::vector<std::string> parts;

@@ -3,11 +3,9 @@
 // follow here.
 #include <fmt/format.h>
 
-#include <fstream>
 #include <functional>
 #include <limits>
 #include <numbers>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -15,6 +13,7 @@
 #include "io/config_detail.hpp"
 #include "io/config_keys.hpp"
 #include "io/input_error.hpp"
+#include "io/text.hpp"
 
 namespace dilatant {
 namespace {
@@ -22,8 +21,8 @@ namespace {
 using config_detail::check;
 using config_detail::Section;
 
-// Every table of the document is a known section; exactly one of [cell] and
-// [scene] sets the run mode.
+// Every table of the document is a known section; exactly one of [cell],
+// [scene] and [sediment] sets the run mode.
 RunMode check_sections(const toml::table& root, const std::string& source) {
   for (const auto& [key, node] : root) {
     const auto where = config_detail::where(source, &node, key.str());
@@ -223,14 +222,8 @@ void apply_config_overrides(toml::table& root, const std::vector<std::string>& o
 }
 
 Config load_config(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in || std::filesystem::is_directory(file))
-    throw InputError(
-        fmt::format("{}: cannot read the config file ({})", file.string(),
-                    std::filesystem::exists(file) ? "not a readable file" : "no such file"));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_config(text.str(), file.string(), file.parent_path(), overrides);
+  return parse_config(read_input_file(file, "config file"), file.string(), file.parent_path(),
+                      overrides);
 }
 
 // The built-in run of `dilatant run` without a CONFIG: the paper's cell at

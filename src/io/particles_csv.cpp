@@ -15,6 +15,7 @@
 #include <unordered_map>
 
 #include "io/input_error.hpp"
+#include "io/text.hpp"
 
 namespace dilatant {
 namespace {
@@ -25,12 +26,6 @@ using namespace std::string_view_literals;
 constexpr std::array kColumns = {"id"sv, "x"sv,  "y"sv,  "z"sv,  "r"sv,  "vx"sv,
                                  "vy"sv, "vz"sv, "wx"sv, "wy"sv, "wz"sv, "fixed"sv};
 constexpr std::size_t kRequired = 5;  // id, x, y, z, r
-
-std::string_view trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\r");
-  if (first == std::string_view::npos) return {};
-  return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
-}
 
 std::vector<std::string_view> split(std::string_view line) {
   std::vector<std::string_view> fields;

@@ -12,12 +12,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <tuple>
 
 #include "io/input_error.hpp"
+#include "io/text.hpp"
 #include "sweep/sweep_plan_detail.hpp"
 
 namespace dilatant::sweep {
@@ -37,12 +36,6 @@ constexpr std::array kArrayKeys = {"cell.size"sv, "scene.gravity"sv, "scene.box"
 constexpr std::size_t kMaxPoints = 100000;
 
 using detail::join;
-
-std::string trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\r\n");
-  if (first == std::string_view::npos) return {};
-  return std::string(s.substr(first, s.find_last_not_of(" \t\r\n") - first + 1));
-}
 
 bool from_file(const toml::node& n, const std::string& source) {
   const auto& path = n.source().path;
@@ -82,7 +75,7 @@ Overrides split_overrides(const std::vector<std::string>& overrides) {
   Overrides o;
   for (const auto& text : overrides) {
     const auto eq = text.find('=');
-    const std::string key = trim(std::string_view(text).substr(0, std::min(eq, text.size())));
+    const std::string key(trim(std::string_view(text).substr(0, std::min(eq, text.size()))));
     if (eq != std::string::npos && key.rfind("sweep.", 0) == 0) {
       o.settings.emplace_back(key.substr(6), trim(std::string_view(text).substr(eq + 1)));
     } else {
@@ -369,14 +362,8 @@ SweepPlan parse_sweep(std::string_view text, std::string source,
 }
 
 SweepPlan load_sweep(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in || std::filesystem::is_directory(file))
-    throw InputError(
-        fmt::format("{}: cannot read the sweep file ({})", file.string(),
-                    std::filesystem::exists(file) ? "not a readable file" : "no such file"));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_sweep(text.str(), file.string(), file.parent_path(), overrides);
+  return parse_sweep(read_input_file(file, "sweep file"), file.string(), file.parent_path(),
+                     overrides);
 }
 
 }  // namespace dilatant::sweep
