@@ -112,8 +112,9 @@ def self_test():
         (src / "solver" / "a.inl").write_text("\n".join(ALLOWED) + "\n")
         (src / "fluid" / "b.h").write_text("\n".join(FORBIDDEN) + "\n")
         (src / "fluid" / "notes.txt").write_text("")
-        lines = {int(p.split(":")[1]) for p in check(src) if "/b.h:" in p}
-        others = [p for p in check(src) if "/b.h:" not in p]
+        reports = check(src)
+    lines = {int(p.split(":")[1]) for p in reports if "/b.h:" in p}
+    others = [p for p in reports if "/b.h:" not in p]
     expected = set(range(1, len(FORBIDDEN) + 1))
     if lines != expected or len(others) != 1 or "notes.txt" not in others[0]:
         print(f"check-layers self-test: reported lines {sorted(lines)} of {sorted(expected)}, "

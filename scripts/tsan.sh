@@ -21,8 +21,9 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 # seed-averaged physics suites run the same threaded code as ShearCellRun.
 # They run as two processes side by side (each test already uses two threads,
 # but a run leaves cores idle between its OpenMP regions and in the CLI's
-# start-up): 195 s in one process, 114 s as these two halves on 2 cores, split
-# by measured time (114 s and 99 s when run side by side; docs/testing.md).
+# start-up): on an idle 2-core machine 195 s in one process, 114 s as these two
+# halves, split by measured time (114 s and 99 s side by side). Inside CI the
+# stage gained less (5:53 to 5:42; docs/testing.md).
 half_a=(ShearCellFluid SweepRunner LeesEdwardsCell ShearCellRun NumericalFault ContactDetector)
 half_b=(RampToJam SweepCommand Checkpoint ShearCellObject ContactResidual UnconvergedRun)
 suites=("${half_a[@]}" "${half_b[@]}")
