@@ -20,9 +20,25 @@
 # The sanitizer trees build with -O1 and line tables only: what a sanitizer
 # report needs (file:line in every frame), at a fraction of full -g's compile
 # time. Warnings are g++'s business (release); clang's differ in detail.
+#
+# Release and sanitize are unity builds: CMake compiles the sources of a target
+# in batches of 8, one translation unit a batch, so the templates every file
+# instantiates (GoogleTest's, Eigen's, fmt's, JSON's, std::string's) are
+# compiled once a batch instead of once a file: half the CPU time of a whole
+# build (docs/testing.md "Compile time"). Each test file keeps its helpers in a
+# namespace named after the file (dilatant::incline_test) so that two files'
+# helpers never meet in a batch. An edit-compile loop rebuilds a whole batch:
+#   DILATANT_UNITY=OFF scripts/build.sh     compiles each source alone.
+# The tsan tree always compiles each source alone, which also checks that every
+# library source includes what it uses.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
+unity=${DILATANT_UNITY:-ON}
+if [[ $unity != ON && $unity != OFF ]]; then
+  echo "$0: DILATANT_UNITY must be ON or OFF, not '$unity'" >&2
+  exit 2
+fi
 sanitizer_tree=(-DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only" -DDILATANT_WERROR=OFF
   -DDILATANT_BUILD_BENCHMARKS=OFF -DDILATANT_BUILD_PYTHON=OFF -DDILATANT_WITH_MPI=OFF)
@@ -30,15 +46,16 @@ case "${1:-release}" in
   release)
     dir=build
     options=(-DCMAKE_BUILD_TYPE=Release -DDILATANT_SANITIZE=OFF -DDILATANT_BUILD_BENCHMARKS=ON
-      -DDILATANT_BUILD_PYTHON=ON)
+      -DDILATANT_BUILD_PYTHON=ON -DCMAKE_UNITY_BUILD="$unity")
     ;;
   sanitize)
     dir=build-sanitize
-    options=("${sanitizer_tree[@]}" -DDILATANT_SANITIZE=ON -DDILATANT_BUILD_FUZZERS=ON)
+    options=("${sanitizer_tree[@]}" -DDILATANT_SANITIZE=ON -DDILATANT_BUILD_FUZZERS=ON
+      -DCMAKE_UNITY_BUILD="$unity")
     ;;
   tsan)
     dir=build-tsan
-    options=("${sanitizer_tree[@]}" -DDILATANT_TSAN=ON)
+    options=("${sanitizer_tree[@]}" -DDILATANT_TSAN=ON -DCMAKE_UNITY_BUILD=OFF)
     ;;
   *)
     echo "usage: $0 [release|sanitize|tsan] [target...]" >&2

@@ -2,11 +2,10 @@
 
 #include <fmt/format.h>
 
-#include <atomic>
-#include <csignal>
 #include <iostream>
 #include <stdexcept>
 
+#include "app/stop_request.hpp"
 #include "drivers/scene_run.hpp"
 #include "drivers/shear_cell_run.hpp"
 #include "io/config.hpp"
@@ -44,8 +43,6 @@ CLI::App* add_run_command(CLI::App& app, RunCommandArgs& args) {
 
 namespace {
 
-std::atomic<bool> g_stop_requested{false};
-
 // A run whose solver did not converge says so, never silently.
 void warn_if_unconverged(const Config& config, long steps, long unconverged) {
   if (unconverged == 0) return;
@@ -54,14 +51,11 @@ void warn_if_unconverged(const Config& config, long steps, long unconverged) {
       "(see timeseries.csv, summary.json)\n",
       unconverged, steps, config.solver.max_iterations);
 }
-extern "C" void request_stop(int) { g_stop_requested.store(true); }
 
 int run_cell(const Config& config, const RunOptions& options, bool resume,
              const std::string& start_from) {
   // SIGINT/SIGTERM: finish the step, write a checkpoint, exit cleanly.
-  std::signal(SIGINT, request_stop);
-  std::signal(SIGTERM, request_stop);
-  CellRunOptions cell_options{options, resume, &g_stop_requested};
+  CellRunOptions cell_options{options, resume, stop_on_interrupt()};
   cell_options.start_from = start_from;
   const CellOutcome outcome = run_shear_cell(config, cell_options);
   if (outcome.interrupted) {

@@ -4,13 +4,13 @@
 #include <unistd.h>
 
 #include <atomic>
-#include <csignal>
 #include <exception>
 #include <iostream>
 #include <optional>
 #include <thread>
 
 #include "app/plot_command.hpp"
+#include "app/stop_request.hpp"
 #include "io/input_error.hpp"
 #include "sweep/mpi_session.hpp"
 #include "sweep/sweep_plan.hpp"
@@ -62,9 +62,6 @@ CLI::App* add_sweep_command(CLI::App& app, SweepCommandArgs& args) {
 }
 
 namespace {
-
-std::atomic<bool> g_stop_requested{false};
-extern "C" void request_sweep_stop(int) { g_stop_requested.store(true); }
 
 int resolve_jobs(int from_command_line, int from_file) {
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
@@ -141,10 +138,8 @@ int execute_sweep_command(const SweepCommandArgs& args) {
                : resolve_jobs(args.jobs, plan.settings.jobs);
   options.show_progress = lead && !args.quiet && (args.progress || isatty(STDERR_FILENO));
   options.report_failures = lead && !args.quiet;
-  options.stop = &g_stop_requested;
   // SIGINT/SIGTERM: the running points write a checkpoint and stop.
-  std::signal(SIGINT, request_sweep_stop);
-  std::signal(SIGTERM, request_sweep_stop);
+  options.stop = stop_on_interrupt();
 #if DILATANT_WITH_MPI
   const sweep::SweepOutcome outcome =
       on_ranks ? sweep::run_sweep_on_ranks(plan, options, mpi) : sweep::run_sweep(plan, options);

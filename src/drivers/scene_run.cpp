@@ -9,6 +9,7 @@
 #include "io/atomic_file.hpp"
 #include "io/contacts_csv.hpp"
 #include "io/trajectory_writer.hpp"
+#include "measure/run_cost.hpp"
 
 namespace dilatant {
 
@@ -46,8 +47,7 @@ SceneOutcome run_scene(const Config& config, const RunOptions& options) {
   timeseries.commit();
   write_file_atomically(options.out_dir / "contacts.csv",
                         contacts_csv(scene.world().bodies, scene.contacts(), dt));
-  const double wall =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall = seconds_since(start);
   write_file_atomically(options.out_dir / "summary.json", scene.summary(wall).dump(2) + "\n");
   return SceneOutcome{scene.statistics().steps, scene.statistics().unconverged};
 }

@@ -13,6 +13,7 @@
 #include "dilatant/version.hpp"
 #include "drivers/model_setup.hpp"
 #include "io/atomic_file.hpp"
+#include "measure/run_cost.hpp"
 
 namespace dilatant {
 
@@ -163,8 +164,7 @@ SedimentOutcome run_sediment(const Config& config, const RunOptions& options) {
   j["steps"] = out.steps;
   j["frac_steps_unconverged"] =
       out.steps > 0 ? double(out.unconverged_steps) / double(out.steps) : 0.0;
-  j["wall_time_s"] =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  j["wall_time_s"] = seconds_since(start);
   write_file_atomically(options.out_dir / "summary.json", j.dump(2) + "\n");
   return out;
 }

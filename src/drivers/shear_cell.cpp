@@ -12,15 +12,12 @@
 #include "drivers/model_setup.hpp"
 #include "measure/bulk_fraction.hpp"
 #include "measure/particle_stress.hpp"
+#include "measure/run_cost.hpp"
 #include "measure/wall_forces.hpp"
 
 namespace dilatant {
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 CellUnits units_of(const Config& config) {
   return make_cell_units(config.cell()->shear_stress, config.density, config.cell()->radius_max,

@@ -12,14 +12,11 @@
 #include "io/atomic_file.hpp"
 #include "io/config_compare.hpp"
 #include "io/input_error.hpp"
+#include "measure/run_cost.hpp"
 
 namespace dilatant {
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 CellOutcome outcome_of(const ShearCell& cell, bool interrupted) {
   CellOutcome outcome;

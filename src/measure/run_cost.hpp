@@ -3,6 +3,7 @@
 // contact updates (one contact solved once in one sweep), and peak memory.
 // Reported in summary.json so that every run is also a benchmark (bench/).
 // Times cover this invocation only (a resumed run counts from its restart).
+#include <chrono>
 
 namespace dilatant {
 
@@ -23,6 +24,9 @@ struct RunCost {
     return contact_updates > 0.0 ? 1e9 * solve_s / contact_updates : 0.0;
   }
 };
+
+// Wall time since `start`, in seconds (the steady clock: never jumps).
+double seconds_since(std::chrono::steady_clock::time_point start);
 
 // Peak resident memory of this process so far, in MiB (getrusage).
 double peak_memory_mib();

@@ -15,7 +15,7 @@
 #include "analysis/report_files.hpp"
 #include "io/io_test_files.hpp"
 
-namespace dilatant::analysis {
+namespace dilatant::analysis::analysis_test {
 namespace {
 
 const std::filesystem::path kExample =
@@ -151,4 +151,4 @@ TEST(ReportFiles, WriteOneRowPerCurveAndPointAndTheFitsAsJson) {
 }
 
 }  // namespace
-}  // namespace dilatant::analysis
+}  // namespace dilatant::analysis::analysis_test

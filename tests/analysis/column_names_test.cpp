@@ -6,7 +6,7 @@
 
 #include <string>
 
-namespace dilatant::analysis {
+namespace dilatant::analysis::column_names_test {
 namespace {
 
 struct Case {
@@ -72,4 +72,4 @@ TEST(ColumnNames, ReadsTheUnitOfAUnitsRowField) {
 }
 
 }  // namespace
-}  // namespace dilatant::analysis
+}  // namespace dilatant::analysis::column_names_test

@@ -17,7 +17,7 @@
 #include "analysis/synthetic_curves.hpp"
 #include "io/io_test_files.hpp"
 
-namespace dilatant::analysis {
+namespace dilatant::analysis::curve_analysis_test {
 namespace {
 
 using test::CurveModel;
@@ -370,4 +370,4 @@ TEST(CurveAnalysis, ACurveThatNeverFlowsIsJammedAndOneThatStopsIsDst) {
 }
 
 }  // namespace
-}  // namespace dilatant::analysis
+}  // namespace dilatant::analysis::curve_analysis_test

@@ -8,7 +8,7 @@
 
 #include "io/io_test_files.hpp"
 
-namespace dilatant::analysis {
+namespace dilatant::analysis::delimited_text_test {
 namespace {
 
 TEST(DelimitedText, ParsesDecimalPointsAndDecimalCommas) {
@@ -56,4 +56,4 @@ TEST(DelimitedText, DecodesUtf16WithBomAndStripsUtf8BomAndCarriageReturns) {
 }
 
 }  // namespace
-}  // namespace dilatant::analysis
+}  // namespace dilatant::analysis::delimited_text_test

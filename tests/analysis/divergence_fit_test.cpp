@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-namespace dilatant::analysis {
+namespace dilatant::analysis::divergence_fit_test {
 namespace {
 
 constexpr double kA = 0.12, kAlpha = 0.9;  // the shipped example's master curve
@@ -158,4 +158,4 @@ TEST(DivergenceFit, SaysWhyWhenItCannotFit) {
 }
 
 }  // namespace
-}  // namespace dilatant::analysis
+}  // namespace dilatant::analysis::divergence_fit_test

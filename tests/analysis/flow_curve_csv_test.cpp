@@ -11,7 +11,7 @@
 
 #include "io/io_test_files.hpp"
 
-namespace dilatant::analysis {
+namespace dilatant::analysis::flow_curve_csv_test {
 namespace {
 
 const std::filesystem::path kAntonPaarExport =
@@ -128,4 +128,4 @@ TEST(FlowCurveCsv, AMissingFileIsAnInputError) {
 }
 
 }  // namespace
-}  // namespace dilatant::analysis
+}  // namespace dilatant::analysis::flow_curve_csv_test

@@ -7,7 +7,7 @@
 
 #include "io/input_error.hpp"
 
-namespace dilatant::analysis {
+namespace dilatant::analysis::jamming_table_test {
 namespace {
 
 constexpr const char* kTable =
@@ -71,4 +71,4 @@ TEST(JammingTable, TheBuiltInTableIsValid) {
 }
 
 }  // namespace
-}  // namespace dilatant::analysis
+}  // namespace dilatant::analysis::jamming_table_test

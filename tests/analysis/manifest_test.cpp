@@ -7,7 +7,7 @@
 #include "analysis/analysis_input.hpp"
 #include "io/io_test_files.hpp"
 
-namespace dilatant::analysis {
+namespace dilatant::analysis::manifest_test {
 namespace {
 
 constexpr const char* kCurveCsv =
@@ -136,4 +136,4 @@ TEST(Manifest, AFileThatIsNeitherManifestNorSweepTableIsRefused) {
 }
 
 }  // namespace
-}  // namespace dilatant::analysis
+}  // namespace dilatant::analysis::manifest_test

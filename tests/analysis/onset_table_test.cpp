@@ -9,7 +9,7 @@
 
 #include "io/input_error.hpp"
 
-namespace dilatant::analysis {
+namespace dilatant::analysis::onset_table_test {
 namespace {
 
 constexpr const char* kOnsets =
@@ -71,4 +71,4 @@ TEST(OnsetTable, BuiltInTableIsMeasuredAndBelowThePrefactorOneScale) {
 }
 
 }  // namespace
-}  // namespace dilatant::analysis
+}  // namespace dilatant::analysis::onset_table_test

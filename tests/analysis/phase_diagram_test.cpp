@@ -7,7 +7,7 @@
 
 #include <sstream>
 
-namespace dilatant::analysis {
+namespace dilatant::analysis::phase_diagram_test {
 namespace {
 
 TEST(PhaseDiagram, EveryNodeWithTheRegimeOfPredict) {
@@ -39,4 +39,4 @@ TEST(PhaseDiagram, EveryNodeWithTheRegimeOfPredict) {
 }
 
 }  // namespace
-}  // namespace dilatant::analysis
+}  // namespace dilatant::analysis::phase_diagram_test

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace dilatant::analysis {
+namespace dilatant::analysis::student_t_test {
 namespace {
 
 struct Tabulated {
@@ -47,4 +47,4 @@ TEST(IncompleteBeta, MatchesClosedForms) {
 }
 
 }  // namespace
-}  // namespace dilatant::analysis
+}  // namespace dilatant::analysis::student_t_test

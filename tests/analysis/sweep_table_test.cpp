@@ -16,7 +16,7 @@
 #include "analysis/curve_analysis.hpp"
 #include "io/io_test_files.hpp"
 
-namespace dilatant::analysis {
+namespace dilatant::analysis::sweep_table_test {
 namespace {
 
 const std::filesystem::path kSweep =
@@ -106,4 +106,4 @@ INSTANTIATE_TEST_SUITE_P(SweepTable, SweepTableBad, ::testing::ValuesIn(bad_swee
                          [](const auto& p) { return p.param.name; });
 
 }  // namespace
-}  // namespace dilatant::analysis
+}  // namespace dilatant::analysis::sweep_table_test

@@ -12,7 +12,7 @@
 
 #include "app/cli_runner.hpp"
 
-namespace dilatant {
+namespace dilatant::analyze_command_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -164,4 +164,4 @@ TEST(AnalyzeCommand, HelpDescribesInputsAndOutputs) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::analyze_command_test

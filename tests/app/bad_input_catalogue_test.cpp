@@ -12,7 +12,7 @@
 
 #include "app/cli_runner.hpp"
 
-namespace dilatant {
+namespace dilatant::bad_input_catalogue_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -215,4 +215,4 @@ TEST(BadInputCatalogue, DamagedOrForeignCheckpointsAreRefused) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::bad_input_catalogue_test

@@ -18,7 +18,7 @@
 
 #include "app/cli_runner.hpp"
 
-namespace dilatant {
+namespace dilatant::cli_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -385,4 +385,4 @@ TEST(Cli, RunHelpDocumentsSet) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::cli_test

@@ -11,7 +11,7 @@
 #include "io/config.hpp"
 #include "sweep/sweep_plan.hpp"
 
-namespace dilatant {
+namespace dilatant::examples_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -49,4 +49,4 @@ TEST(Examples, EveryConfigurationLoads) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::examples_test

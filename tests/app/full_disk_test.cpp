@@ -10,7 +10,7 @@
 
 #include "app/cli_runner.hpp"
 
-namespace dilatant {
+namespace dilatant::full_disk_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -48,4 +48,4 @@ TEST(FullDisk, AFailedWriteStopsTheRunCleanlyAndTheNextRunCompletes) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::full_disk_test

@@ -9,7 +9,7 @@
 
 #include "app/cli_runner.hpp"
 
-namespace dilatant {
+namespace dilatant::jam_command_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -63,9 +63,9 @@ TEST(JamCommand, BadInputIsExit2WithOneLine) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::jam_command_test
 
-namespace dilatant {
+namespace dilatant::jam_command_test {
 namespace {
 
 TEST(PredictCommand, AnswersAndRefusesBadInput) {
@@ -116,4 +116,4 @@ TEST(PredictCommand, OnsetScalesAsOneOverScAndGridWritesTheDiagram) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::jam_command_test

@@ -11,7 +11,7 @@
 
 #include "app/cli_runner.hpp"
 
-namespace dilatant {
+namespace dilatant::read_only_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -92,4 +92,4 @@ TEST_F(ReadOnlyOutput, AReadOnlyFolderIsNamedNothingIsLeftAndTheNextRunCompletes
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::read_only_test

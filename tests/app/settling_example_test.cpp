@@ -18,7 +18,7 @@
 
 #include "app/cli_runner.hpp"
 
-namespace dilatant {
+namespace dilatant::settling_example_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -78,4 +78,4 @@ TEST(SettlingExample, BeadFallsAtStokesSpeedThenSlowsThroughTheFilm) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::settling_example_test

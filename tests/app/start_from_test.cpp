@@ -10,7 +10,7 @@
 
 #include "app/cli_runner.hpp"
 
-namespace dilatant {
+namespace dilatant::start_from_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -54,4 +54,4 @@ TEST(Cli, StartFromContinuesACheckpointUnderANewConfigAndRefusesOthers) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::start_from_test

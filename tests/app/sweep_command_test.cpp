@@ -18,7 +18,7 @@
 #include "app/cli_runner.hpp"
 #include "sweep/tiny_sweep.hpp"
 
-namespace dilatant {
+namespace dilatant::sweep_command_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -288,4 +288,4 @@ TEST(SweepCommand, HelpDescribesTheSweepFileAndItsOutputs) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::sweep_command_test

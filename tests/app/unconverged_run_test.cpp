@@ -10,7 +10,7 @@
 
 #include "app/cli_runner.hpp"
 
-namespace dilatant::test {
+namespace dilatant::test::unconverged_run_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -73,4 +73,4 @@ TEST(UnconvergedRun, NamesTheStepAndTheContactOfTheLargestResidual) {
 }
 
 }  // namespace
-}  // namespace dilatant::test
+}  // namespace dilatant::test::unconverged_run_test

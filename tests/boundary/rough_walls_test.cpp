@@ -11,7 +11,7 @@
 #include "friction/coulomb_law.hpp"
 #include "solver/time_stepper.hpp"
 
-namespace dilatant {
+namespace dilatant::rough_walls_test {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -86,4 +86,4 @@ TEST(RoughWalls, ContactsOnTheTopWallObeyTheWallsLaw) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::rough_walls_test

@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-namespace dilatant {
+namespace dilatant::contact_detector_test {
 namespace {
 
 struct Expected {
@@ -160,4 +160,4 @@ TEST(ContactDetector, MatchesBruteForceAcrossALeesEdwardsBoundary) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::contact_detector_test

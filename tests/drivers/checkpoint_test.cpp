@@ -10,7 +10,7 @@
 
 #include "drivers/shear_cell.hpp"
 
-namespace dilatant {
+namespace dilatant::checkpoint_test {
 namespace {
 
 std::filesystem::path tiny_checkpoint(const std::string& name) {
@@ -62,4 +62,4 @@ TEST(Checkpoint, AnOlderFormatIsNamedAsSuch) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::checkpoint_test

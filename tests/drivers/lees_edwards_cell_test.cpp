@@ -18,7 +18,7 @@
 #include "solver/slab_partition.hpp"
 #include "solver/time_stepper.hpp"
 
-namespace dilatant {
+namespace dilatant::lees_edwards_cell_test {
 namespace {
 
 Config le_cell(const std::vector<std::string>& extra = {}) {
@@ -357,4 +357,4 @@ TEST(LeesEdwardsCell, ContinuationRefusesAStateOfTheOtherBoundary) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::lees_edwards_cell_test

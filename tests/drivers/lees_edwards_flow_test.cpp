@@ -20,7 +20,7 @@
 #include "drivers/shear_cell_run.hpp"
 #include "io/config.hpp"
 
-namespace dilatant {
+namespace dilatant::lees_edwards_flow_test {
 namespace {
 
 const std::vector<std::string> kCell = {"cell.boundary=\"lees-edwards\"",
@@ -163,4 +163,4 @@ TEST(LeesEdwardsMass, SteadyStateDoesNotDependOnTheBoundaryMass) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::lees_edwards_flow_test

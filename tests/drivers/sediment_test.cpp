@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-namespace dilatant {
+namespace dilatant::sediment_test {
 namespace {
 
 SedimentFraction settle(double mu0) {
@@ -42,4 +42,4 @@ TEST(Sediment, FrictionLoosensTheSediment) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::sediment_test

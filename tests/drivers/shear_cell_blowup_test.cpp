@@ -13,7 +13,7 @@
 #include "drivers/shear_cell.hpp"
 #include "io/config.hpp"
 
-namespace dilatant {
+namespace dilatant::shear_cell_blowup_test {
 namespace {
 
 TEST(CellBlowUp, ACollapsedTimeStepStopsTheRun) {
@@ -34,4 +34,4 @@ TEST(CellBlowUp, AnOrdinaryStartIsNotOne) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::shear_cell_blowup_test

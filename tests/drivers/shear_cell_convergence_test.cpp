@@ -30,7 +30,7 @@
 
 #include "drivers/cell_run_helpers.hpp"
 
-namespace dilatant {
+namespace dilatant::shear_cell_convergence_test {
 namespace {
 
 // Runs are cached by name within the process: the reference point is shared.
@@ -79,4 +79,4 @@ TEST(CellConvergence, HalvedTimeStepKeepsEtaAndBoundaryFraction) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::shear_cell_convergence_test

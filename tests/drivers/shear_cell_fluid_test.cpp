@@ -13,7 +13,7 @@
 #include "drivers/shear_cell_run.hpp"
 #include "io/config.hpp"
 
-namespace dilatant {
+namespace dilatant::shear_cell_fluid_test {
 namespace {
 
 const std::vector<std::string> kCell = {
@@ -61,4 +61,4 @@ TEST(ShearCellFluid, BoxVolumeFractionCountsTheWholeHeight) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::shear_cell_fluid_test

@@ -12,7 +12,7 @@
 
 #include "drivers/cell_run_helpers.hpp"
 
-namespace dilatant {
+namespace dilatant::shear_cell_jam_test {
 namespace {
 
 nlohmann::json jammed_cell(const std::string& transient) {
@@ -46,4 +46,4 @@ TEST(CellJam, TheLastRowOfAJammedRunCountsItsBulkFraction) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::shear_cell_jam_test

@@ -12,7 +12,7 @@
 #include "drivers/shear_cell.hpp"
 #include "drivers/shear_cell_run.hpp"
 
-namespace dilatant {
+namespace dilatant::shear_cell_object_test {
 namespace {
 
 Config tiny_cell() {
@@ -85,4 +85,4 @@ TEST(ShearCellObject, ExposesUnitsAndContacts) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::shear_cell_object_test

@@ -16,7 +16,7 @@
 #include "drivers/shear_cell_state.hpp"
 #include "io/config.hpp"
 
-namespace dilatant {
+namespace dilatant::shear_cell_physics_test {
 namespace {
 
 const std::vector<std::string> kCell = {
@@ -139,4 +139,4 @@ TEST_F(SteadyShear, FixedWallDoesNotDrift) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::shear_cell_physics_test

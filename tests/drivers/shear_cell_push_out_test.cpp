@@ -17,7 +17,7 @@
 #include "drivers/shear_cell.hpp"
 #include "io/config.hpp"
 
-namespace dilatant {
+namespace dilatant::shear_cell_push_out_test {
 namespace {
 
 const std::vector<std::string> kJammedCell = {
@@ -51,4 +51,4 @@ TEST(CellPushOut, ASwollenParticleDoesNotCollapseTheStep) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::shear_cell_push_out_test

@@ -12,7 +12,7 @@
 
 #include "drivers/cell_run_helpers.hpp"
 
-namespace dilatant {
+namespace dilatant::shear_cell_scaling_test {
 namespace {
 
 nlohmann::json run_coulomb_cell(double tau) {
@@ -51,4 +51,4 @@ TEST(CellScaling, DoublingTheStressMultipliesTheRateBySqrt2) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::shear_cell_scaling_test

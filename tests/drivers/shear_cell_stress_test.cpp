@@ -20,7 +20,7 @@
 #include "measure/particle_stress.hpp"
 #include "measure/wall_forces.hpp"
 
-namespace dilatant {
+namespace dilatant::shear_cell_stress_test {
 namespace {
 
 struct Moments {
@@ -75,4 +75,4 @@ TEST(ParticleStress, TheWallCellsVirialBalancesTheDriveStepByStep) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::shear_cell_stress_test

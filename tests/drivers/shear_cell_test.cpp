@@ -14,7 +14,7 @@
 #include "io/config.hpp"
 #include "solver/slab_partition.hpp"
 
-namespace dilatant {
+namespace dilatant::shear_cell_test {
 namespace {
 
 Config small_cell(const std::vector<std::string>& extra = {}) {
@@ -151,4 +151,4 @@ TEST(ShearCellRun, TwoThreadsGiveTheSameBitsAsOne) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::shear_cell_test

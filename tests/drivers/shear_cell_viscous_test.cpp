@@ -22,7 +22,7 @@
 
 #include "drivers/cell_run_helpers.hpp"
 
-namespace dilatant {
+namespace dilatant::shear_cell_viscous_test {
 namespace {
 
 std::vector<nlohmann::json> viscous_cells(const std::string& name, const std::string& mu0) {
@@ -41,4 +41,4 @@ TEST(CellViscous, ViscosityDoesNotDependOnBoundaryFriction) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::shear_cell_viscous_test

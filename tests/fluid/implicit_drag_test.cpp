@@ -13,7 +13,7 @@
 #include "friction/coulomb_law.hpp"
 #include "solver/time_stepper.hpp"
 
-namespace dilatant {
+namespace dilatant::implicit_drag_test {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -130,4 +130,4 @@ TEST(ImplicitDrag, RejectsCoefficientsThatDoNotMatchTheBodies) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::implicit_drag_test

@@ -22,7 +22,7 @@
 #include "friction/coulomb_law.hpp"
 #include "solver/time_stepper.hpp"
 
-namespace dilatant {
+namespace dilatant::squeeze_film_test {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -152,4 +152,4 @@ TEST(SqueezeFilm, FreePairConservesMomentumAndAccountsForItsLoss) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::squeeze_film_test

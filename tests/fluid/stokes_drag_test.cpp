@@ -16,7 +16,7 @@
 #include "friction/coulomb_law.hpp"
 #include "solver/time_stepper.hpp"
 
-namespace dilatant {
+namespace dilatant::stokes_drag_test {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -120,4 +120,4 @@ TEST(StokesDrag, DragAndContactWorksAddUpToTheKineticEnergyChange) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::stokes_drag_test

@@ -10,7 +10,7 @@
 
 #include "friction/friction_law.hpp"
 
-namespace dilatant {
+namespace dilatant::coulomb_law_test {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -48,4 +48,4 @@ TEST(CoulombLaw, OpenContactCarriesNoFriction) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::coulomb_law_test

@@ -14,7 +14,7 @@
 
 #include "friction/friction_law.hpp"
 
-namespace dilatant {
+namespace dilatant::stribeck_law_test {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -199,7 +199,7 @@ TEST(Regime, Names) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::stribeck_law_test
 
 // With mu0 below mu_HD(s_c) neither the BL nor the HD branch is consistent; the
 // contact must slide exactly at s = s_c with a friction between the two.

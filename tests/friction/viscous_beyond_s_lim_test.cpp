@@ -8,7 +8,7 @@
 
 #include "friction/stribeck_law.hpp"
 
-namespace dilatant {
+namespace dilatant::viscous_beyond_s_lim_test {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -55,4 +55,4 @@ TEST(ViscousBeyondSlim, ForceIndependentOfTheLoad) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::viscous_beyond_s_lim_test

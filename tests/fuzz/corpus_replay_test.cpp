@@ -14,6 +14,7 @@
 
 #include "fuzz_targets.hpp"
 
+namespace dilatant::corpus_replay_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -68,3 +69,4 @@ TEST(FuzzCorpus, TheHarnessSwallowsRefusalsOnly) {
 }
 
 }  // namespace
+}  // namespace dilatant::corpus_replay_test

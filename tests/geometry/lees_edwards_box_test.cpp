@@ -8,7 +8,7 @@
 
 #include "geometry/periodic_box.hpp"
 
-namespace dilatant {
+namespace dilatant::lees_edwards_box_test {
 namespace {
 
 PeriodicBox sheared_box(double offset, double velocity) {
@@ -90,4 +90,4 @@ TEST(LeesEdwardsBox, TheOffsetAdvancesWithTheShearAndStaysInTheBox) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::lees_edwards_box_test

@@ -5,7 +5,7 @@
 
 #include <random>
 
-namespace dilatant {
+namespace dilatant::periodic_box_test {
 namespace {
 
 PeriodicBox cell_box() {
@@ -45,4 +45,4 @@ TEST(PeriodicBox, ImagesAreNeverFartherThanHalfABox) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::periodic_box_test

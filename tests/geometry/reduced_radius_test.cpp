@@ -6,7 +6,7 @@
 
 #include "friction/sommerfeld.hpp"
 
-namespace dilatant {
+namespace dilatant::reduced_radius_test {
 namespace {
 
 TEST(ReducedRadius, EqualSpheresPlaneAndSymmetry) {
@@ -26,4 +26,4 @@ TEST(SommerfeldNumber, IsEtaSpeedRadiusOverNormalForce) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::reduced_radius_test

@@ -8,7 +8,7 @@
 #include "io/input_error.hpp"
 #include "io/io_test_files.hpp"
 
-namespace dilatant {
+namespace dilatant::config_boundary_test {
 namespace {
 
 using ::testing::HasSubstr;
@@ -114,4 +114,4 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<BadInput>& p) { return p.param.name; });
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::config_boundary_test

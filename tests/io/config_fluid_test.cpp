@@ -7,7 +7,7 @@
 #include "io/input_error.hpp"
 #include "io/io_test_files.hpp"
 
-namespace dilatant {
+namespace dilatant::config_fluid_test {
 namespace {
 
 using ::testing::HasSubstr;
@@ -115,4 +115,4 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<BadFluidInput>& p) { return p.param.name; });
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::config_fluid_test

@@ -12,7 +12,7 @@
 
 #include "io/io_test_files.hpp"
 
-namespace dilatant {
+namespace dilatant::config_keys_test {
 namespace {
 
 using ::testing::HasSubstr;
@@ -116,4 +116,4 @@ TEST(ConfigKeys, KeysOfTheOtherModeAreErrors) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::config_keys_test

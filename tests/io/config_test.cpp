@@ -6,7 +6,7 @@
 #include "io/input_error.hpp"
 #include "io/io_test_files.hpp"
 
-namespace dilatant {
+namespace dilatant::config_test {
 namespace {
 
 using ::testing::HasSubstr;
@@ -390,4 +390,4 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<BadInput>& p) { return p.param.name; });
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::config_test

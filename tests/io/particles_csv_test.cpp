@@ -6,7 +6,7 @@
 #include "io/input_error.hpp"
 #include "io/io_test_files.hpp"
 
-namespace dilatant {
+namespace dilatant::particles_csv_test {
 namespace {
 
 using ::testing::HasSubstr;
@@ -106,4 +106,4 @@ TEST(ParticlesCsv, MissingFileIsAnInputError) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::particles_csv_test

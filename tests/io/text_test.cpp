@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-namespace dilatant {
+namespace dilatant::text_test {
 namespace {
 
 TEST(Trim, DropsBlanksAtBothEndsOnly) {
@@ -22,4 +22,4 @@ TEST(Trim, ABlankOrEmptyTextIsEmpty) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::text_test

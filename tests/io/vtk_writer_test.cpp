@@ -16,7 +16,7 @@
 // The ParaView files are checked by VTK's own XML reader, run from Debian's
 // /usr/bin/python3 (python3-vtk9, installed by the project's install script).
 
-namespace dilatant {
+namespace dilatant::vtk_writer_test {
 namespace {
 
 using nlohmann::json;
@@ -233,4 +233,4 @@ TEST(VtkWriter, VtkReaderLoadsParticlesContactsAndCollection) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::vtk_writer_test

@@ -5,7 +5,7 @@
 #include <numbers>
 #include <vector>
 
-namespace dilatant {
+namespace dilatant::bulk_fraction_test {
 namespace {
 
 World one_sphere(double z) {
@@ -39,4 +39,4 @@ TEST(SlabVolumeFraction, LeavesOutTheBodiesOfABoundary) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::bulk_fraction_test

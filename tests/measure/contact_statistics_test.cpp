@@ -7,7 +7,7 @@
 #include <cmath>
 #include <vector>
 
-namespace dilatant {
+namespace dilatant::contact_statistics_test {
 namespace {
 
 Contact between(int i, int j, Regime regime, Regime previous, double s, double v = 0.0) {
@@ -73,4 +73,4 @@ TEST(SommerfeldHistogram, BinsByDecadeWithStickingBelowAndAbove) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::contact_statistics_test

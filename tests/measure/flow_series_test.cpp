@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-namespace dilatant {
+namespace dilatant::flow_series_test {
 namespace {
 
 // Rows of equal duration 0.25 (exact in binary, so blocks split exactly),
@@ -118,4 +118,4 @@ TEST(IntervalSums, CloseTurnsSumsIntoTimeAverages) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::flow_series_test

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-namespace dilatant {
+namespace dilatant::particle_stress_test {
 namespace {
 
 // Two spheres (radii 1 and 0.5) pressed together along z with impulse P: the
@@ -82,4 +82,4 @@ TEST(ParticleStress, InvariantsFollowTheRheologistsConvention) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::particle_stress_test

@@ -8,7 +8,7 @@
 #include <limits>
 #include <vector>
 
-namespace dilatant {
+namespace dilatant::rheology_test {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -97,4 +97,4 @@ TEST(Rheology, ACellAtRestHasNoViscosity) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::rheology_test

@@ -7,7 +7,7 @@
 
 #include <numbers>
 
-namespace dilatant {
+namespace dilatant::sediment_fraction_test {
 namespace {
 
 World cubic_stack(int nx, int layers) {
@@ -44,4 +44,4 @@ TEST(SedimentFraction, EmptyWhenTheExclusionsMeet) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::sediment_fraction_test

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <random>
 
-namespace dilatant {
+namespace dilatant::steadiness_test {
 namespace {
 
 // Rows of 0.05 strain each from strain 0, wall speed speed(strain) + noise.
@@ -68,4 +68,4 @@ TEST(Steadiness, ShortWindowIsUnknown) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::steadiness_test

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-namespace dilatant {
+namespace dilatant::velocity_profile_test {
 namespace {
 
 // Spheres at heights z with v_x = g z + c; optionally a wall sphere moving fast.
@@ -55,4 +55,4 @@ TEST(VelocityProfile, DeviationFromALineIsReported) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::velocity_profile_test

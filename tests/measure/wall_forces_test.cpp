@@ -6,7 +6,7 @@
 
 #include <vector>
 
-namespace dilatant {
+namespace dilatant::wall_forces_test {
 namespace {
 
 Contact contact(int i, int other, const Vec3& normal, double p_n, const Vec3& p_t) {
@@ -48,4 +48,4 @@ TEST(WallForces, SafetyPlanesCountForTheirWall) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::wall_forces_test

@@ -10,7 +10,7 @@
 #include "friction/coulomb_law.hpp"
 #include "solver/contact_solver.hpp"
 
-namespace dilatant {
+namespace dilatant::conjugate_gradient_test {
 namespace {
 
 // A column of n equal spheres resting on a floor under gravity g = 1: the k-th
@@ -74,4 +74,4 @@ TEST(ConjugateGradient, OneContactStaysExact) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::conjugate_gradient_test

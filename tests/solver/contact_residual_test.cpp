@@ -13,7 +13,7 @@
 #include "friction/coulomb_law.hpp"
 #include "solver/contact_solver.hpp"
 
-namespace dilatant {
+namespace dilatant::contact_residual_test {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -127,4 +127,4 @@ TEST(ContactResidual, NoContactsNoResidual) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::contact_residual_test

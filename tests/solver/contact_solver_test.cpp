@@ -10,7 +10,7 @@
 #include "detection/contact_detector.hpp"
 #include "friction/coulomb_law.hpp"
 
-namespace dilatant {
+namespace dilatant::contact_solver_test {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -81,4 +81,4 @@ TEST(ContactSolver, RoundOffLoadConverges) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::contact_solver_test

@@ -10,7 +10,7 @@
 #include "friction/coulomb_law.hpp"
 #include "solver/time_stepper.hpp"
 
-namespace dilatant {
+namespace dilatant::lees_edwards_step_test {
 namespace {
 
 constexpr double kDt = 1e-3;
@@ -111,4 +111,4 @@ TEST(LeesEdwardsStep, MomentumChangesOnlyByTheCrossingsImageVelocity) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::lees_edwards_step_test

@@ -10,7 +10,7 @@
 #include "friction/coulomb_law.hpp"
 #include "solver/time_stepper.hpp"
 
-namespace dilatant {
+namespace dilatant::numerical_fault_test {
 namespace {
 
 TEST(NumericalFault, ANonFiniteBodyStopsTheStepNamingItsId) {
@@ -59,4 +59,4 @@ TEST(NumericalFault, TheLargestOverlapIsLocatedAtItsContact) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::numerical_fault_test

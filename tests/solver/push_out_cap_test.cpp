@@ -12,7 +12,7 @@
 #include "friction/coulomb_law.hpp"
 #include "solver/contact_solver.hpp"
 
-namespace dilatant {
+namespace dilatant::push_out_cap_test {
 namespace {
 
 // A sphere of radius 1 resting on the plane z = 0 with its centre at z = 1 + gap,
@@ -66,4 +66,4 @@ TEST(PushOutCap, AnApproachingOverlapIsStillStopped) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::push_out_cap_test

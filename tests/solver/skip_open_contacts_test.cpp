@@ -10,7 +10,7 @@
 #include "friction/coulomb_law.hpp"
 #include "solver/contact_solver.hpp"
 
-namespace dilatant {
+namespace dilatant::skip_open_contacts_test {
 namespace {
 
 constexpr double kDt = 1e-3;
@@ -87,4 +87,4 @@ TEST(SkipOpenContacts, SameImpulsesAsFullSweepsInFewerVisits) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::skip_open_contacts_test

@@ -10,7 +10,7 @@
 #include "drivers/shear_cell_builder.hpp"
 #include "io/config.hpp"
 
-namespace dilatant {
+namespace dilatant::slab_partition_test {
 namespace {
 
 struct DetectedCell {
@@ -94,4 +94,4 @@ TEST(SlabPartition, ThinCellsAndPeriodicAxesKeepOneSlab) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::slab_partition_test

@@ -12,7 +12,7 @@
 #include "io/io_test_files.hpp"
 #include "sweep/tiny_sweep.hpp"
 
-namespace dilatant::sweep {
+namespace dilatant::sweep::flow_table_test {
 namespace {
 
 std::vector<std::string> lines(const std::string& text) {
@@ -109,4 +109,4 @@ TEST(FlowTable, AnalyzeReadsDoneRowsOnlyAndGroupsCurvesByPhiAndSample) {
 }
 
 }  // namespace
-}  // namespace dilatant::sweep
+}  // namespace dilatant::sweep::flow_table_test

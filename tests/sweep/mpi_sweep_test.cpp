@@ -17,7 +17,7 @@
 #include "sweep/mpi_messages.hpp"
 #endif
 
-namespace dilatant {
+namespace dilatant::mpi_sweep_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -169,4 +169,4 @@ TEST(MpiMessages, UnitsAndRecordsReadBackFromTheirText) {
 #endif
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::mpi_sweep_test

@@ -7,7 +7,7 @@
 #include "io/io_test_files.hpp"
 #include "sweep/tiny_sweep.hpp"
 
-namespace dilatant::sweep {
+namespace dilatant::sweep::point_folder_test {
 namespace {
 
 TEST(PointFolder, TellsFreshResumableAndDonePointsApart) {
@@ -42,4 +42,4 @@ TEST(PointFolder, ARunOfAnotherConfigurationIsRefusedNamingTheKey) {
 }
 
 }  // namespace
-}  // namespace dilatant::sweep
+}  // namespace dilatant::sweep::point_folder_test

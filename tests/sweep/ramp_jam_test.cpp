@@ -14,7 +14,7 @@
 #include "io/input_error.hpp"
 #include "sweep/sweep_runner.hpp"
 
-namespace dilatant::sweep {
+namespace dilatant::sweep::ramp_jam_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -93,4 +93,4 @@ TEST(RampToJam, BothRulesCanBeTurnedOffAndAreRefusedWithoutContinuation) {
 }
 
 }  // namespace
-}  // namespace dilatant::sweep
+}  // namespace dilatant::sweep::ramp_jam_test

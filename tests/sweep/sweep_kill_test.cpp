@@ -15,7 +15,7 @@
 #include "sweep/child_sweep.hpp"
 #include "sweep/tiny_sweep.hpp"
 
-namespace dilatant {
+namespace dilatant::sweep_kill_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -109,4 +109,4 @@ TEST(SweepKill, TwentySigkillsAndResumesGiveTheUninterruptedTable) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::sweep_kill_test

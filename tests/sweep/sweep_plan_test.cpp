@@ -11,7 +11,7 @@
 #include "io/io_test_files.hpp"
 #include "sweep/tiny_sweep.hpp"
 
-namespace dilatant::sweep {
+namespace dilatant::sweep::sweep_plan_test {
 namespace {
 
 SweepPlan parse(const std::string& text, const std::vector<std::string>& overrides = {}) {
@@ -219,4 +219,4 @@ TEST(SweepPlan, ErrorsNameTheFileTheLineTheKeyAndThePoint) {
 }
 
 }  // namespace
-}  // namespace dilatant::sweep
+}  // namespace dilatant::sweep::sweep_plan_test

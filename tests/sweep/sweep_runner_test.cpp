@@ -14,7 +14,7 @@
 #include "drivers/shear_cell_run.hpp"
 #include "sweep/tiny_sweep.hpp"
 
-namespace dilatant::sweep {
+namespace dilatant::sweep::sweep_runner_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -137,4 +137,4 @@ continuation = true
 }
 
 }  // namespace
-}  // namespace dilatant::sweep
+}  // namespace dilatant::sweep::sweep_runner_test

@@ -32,7 +32,7 @@
 #include "solver/time_stepper.hpp"
 #include "validation/scene_helpers.hpp"
 
-namespace dilatant {
+namespace dilatant::column_test {
 namespace {
 
 constexpr int kN = 10;
@@ -139,4 +139,4 @@ TEST(Column, ContactsCarryTheWeightAboveAndNothingDrifts) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::column_test

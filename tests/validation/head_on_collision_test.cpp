@@ -23,7 +23,7 @@
 #include "solver/time_stepper.hpp"
 #include "validation/scene_helpers.hpp"
 
-namespace dilatant {
+namespace dilatant::head_on_collision_test {
 namespace {
 
 using scenes::kEps;
@@ -86,4 +86,4 @@ TEST(HeadOnCollision, UnequalSpheresStickWithCentreOfMassVelocity) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::head_on_collision_test

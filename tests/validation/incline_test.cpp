@@ -29,7 +29,7 @@
 #include "solver/time_stepper.hpp"
 #include "validation/scene_helpers.hpp"
 
-namespace dilatant {
+namespace dilatant::incline_test {
 namespace {
 
 using scenes::kEps;
@@ -141,4 +141,4 @@ TEST(Incline, RollingPositionIsFirstOrderInDt) { expect_first_order_positions(kT
 TEST(Incline, SlidingPositionIsFirstOrderInDt) { expect_first_order_positions(kThetaSlide, false); }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::incline_test

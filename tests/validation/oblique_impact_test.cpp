@@ -19,7 +19,7 @@
 #include "solver/time_stepper.hpp"
 #include "validation/scene_helpers.hpp"
 
-namespace dilatant {
+namespace dilatant::oblique_impact_test {
 namespace {
 
 using scenes::kEps;
@@ -93,4 +93,4 @@ TEST(ObliqueImpact, ExactlyAtThresholdSticksWithFullCone) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::oblique_impact_test

@@ -49,7 +49,7 @@
 #include "solver/time_stepper.hpp"
 #include "validation/scene_helpers.hpp"
 
-namespace dilatant {
+namespace dilatant::settling_packing_test {
 namespace {
 
 using scenes::kEps;
@@ -230,4 +230,4 @@ TEST(SettlingPacking, NoEnergyCreatedNoOverlapComesToRest) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::settling_packing_test

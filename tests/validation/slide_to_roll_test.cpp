@@ -25,7 +25,7 @@
 #include "solver/time_stepper.hpp"
 #include "validation/scene_helpers.hpp"
 
-namespace dilatant {
+namespace dilatant::slide_to_roll_test {
 namespace {
 
 using scenes::kEps;
@@ -91,4 +91,4 @@ TEST(SlideToRoll, StartsRollingAtClosedFormTimeWithFiveSeventhsSpeed) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::slide_to_roll_test

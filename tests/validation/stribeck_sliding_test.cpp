@@ -39,7 +39,7 @@
 #include "solver/time_stepper.hpp"
 #include "validation/scene_helpers.hpp"
 
-namespace dilatant {
+namespace dilatant::stribeck_sliding_test {
 namespace {
 
 using scenes::kEps;
@@ -238,4 +238,4 @@ TEST(StribeckSliding, SlipHistoryJumpAndRollConvergeFirstOrder) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::stribeck_sliding_test

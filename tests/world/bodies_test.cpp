@@ -7,7 +7,7 @@
 #include <limits>
 #include <numbers>
 
-namespace dilatant {
+namespace dilatant::bodies_test {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -54,4 +54,4 @@ TEST(Bodies, ReorderMovesEveryArrayTogether) {
 }
 
 }  // namespace
-}  // namespace dilatant
+}  // namespace dilatant::bodies_test
