@@ -104,6 +104,9 @@ stage "clang-format" format_check || true
 # checker first shows on a made-up tree that it reads every spelling.
 layers_check() { python3 scripts/check-layers.py --self-test && python3 scripts/check-layers.py src; }
 stage "layers" layers_check || true
+# Each test file's code in a namespace of its own: the tests build in unity
+# batches whose make-up changes as files are added (scripts/build.sh).
+stage "test namespaces" python3 scripts/check-test-namespaces.py || true
 
 python3 scripts/test_report.py "$times" release=build/ctest.log sanitize=build-sanitize/ctest.log \
   tsan=build-tsan/tsan.log >build/test-report.md || true

@@ -13,7 +13,7 @@
 #include "drivers/shear_cell_run.hpp"
 #include "io/config.hpp"
 
-namespace dilatant::testing {
+namespace dilatant::test {
 
 // A folder of this process's own for the run called `name`.
 inline std::filesystem::path cell_run_dir(const std::string& name) {
@@ -109,4 +109,4 @@ inline std::vector<nlohmann::json> run_cell_seeds(const std::string& name,
   return runs;
 }
 
-}  // namespace dilatant::testing
+}  // namespace dilatant::test

@@ -37,8 +37,8 @@ const std::vector<std::string> kCell = {"cell.boundary=\"lees-edwards\"",
 class LeesEdwardsSteadyShear : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = testing::cell_run_dir("le_steady");
-    summary_ = testing::run_cell_in(dir_, kCell);
+    dir_ = test::cell_run_dir("le_steady");
+    summary_ = test::run_cell_in(dir_, kCell);
   }
   static void TearDownTestSuite() { std::filesystem::remove_all(dir_); }
   static std::filesystem::path dir_;
@@ -153,10 +153,10 @@ TEST(LeesEdwardsMass, SteadyStateDoesNotDependOnTheBoundaryMass) {
   const auto runs = [&](const std::string& name, double mass) {
     std::vector<std::string> o = kCell;
     o.push_back("cell.boundary_mass=" + std::to_string(mass));
-    return testing::run_cell_seeds(name, o);
+    return test::run_cell_seeds(name, o);
   };
-  const auto light = testing::seed_mean(runs("le_light", 0.25 * m), "gamma_dot");
-  const auto heavy = testing::seed_mean(runs("le_heavy", 4.0 * m), "gamma_dot");
+  const auto light = test::seed_mean(runs("le_light", 0.25 * m), "gamma_dot");
+  const auto heavy = test::seed_mean(runs("le_heavy", 4.0 * m), "gamma_dot");
   EXPECT_NEAR(light.mean, heavy.mean, 3.0 * std::hypot(light.error, heavy.error))
       << light.mean << " +- " << light.error << " vs " << heavy.mean << " +- " << heavy.error;
   EXPECT_LT(light.error, 0.2 * light.mean);  // the comparison can fail

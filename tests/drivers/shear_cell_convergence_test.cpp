@@ -46,14 +46,14 @@ std::vector<nlohmann::json> run_small_cells(const std::string& name,
                                         "fluid.lubrication=none",
                                         "fluid.drag=none"};
   overrides.insert(overrides.end(), extra.begin(), extra.end());
-  const auto runs = testing::run_cell_seeds("conv_" + name, overrides);
+  const auto runs = test::run_cell_seeds("conv_" + name, overrides);
   cache[name] = runs;
   return runs;
 }
 
 void expect_same_point(const std::vector<nlohmann::json>& a, const std::vector<nlohmann::json>& b) {
   for (const std::string key : {"eta", "frac_bl"}) {
-    const testing::SeedMean x = testing::seed_mean(a, key), y = testing::seed_mean(b, key);
+    const test::SeedMean x = test::seed_mean(a, key), y = test::seed_mean(b, key);
     ASSERT_GT(x.error, 0.0) << key;
     ASSERT_GT(y.error, 0.0) << key;
     EXPECT_NEAR(x.mean, y.mean, 3.0 * std::hypot(x.error, y.error)) << key;
@@ -72,7 +72,7 @@ TEST(CellConvergence, HalvedTimeStepKeepsEtaAndBoundaryFraction) {
   const auto coarse = run_small_cells("reference", {});
   const auto fine = run_small_cells("dt_half", {"solver.max_displacement=0.01"});
   // Same strain in twice the steps, give or take the flow's own fluctuations.
-  for (int k = 0; k < testing::kSeeds; ++k) {
+  for (int k = 0; k < test::kSeeds; ++k) {
     EXPECT_GT(fine[k]["steps"].get<double>(), 1.5 * coarse[k]["steps"].get<double>());
   }
   expect_same_point(coarse, fine);

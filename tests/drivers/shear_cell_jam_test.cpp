@@ -16,7 +16,7 @@ namespace dilatant::shear_cell_jam_test {
 namespace {
 
 nlohmann::json jammed_cell(const std::string& transient) {
-  return testing::run_cell_summary(
+  return test::run_cell_summary(
       "jam",
       {"cell.size=[8.0, 5.0, 9.0]", "cell.phi=0.62", "friction.law=coulomb", "friction.mu0=1.0",
        "run.strain=2.0", "run.transient_strain=" + transient, "run.snapshot_interval=0.0",

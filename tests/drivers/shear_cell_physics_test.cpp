@@ -27,8 +27,8 @@ const std::vector<std::string> kCell = {
 class SteadyShear : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = testing::cell_run_dir("steady");
-    summary_ = testing::run_cell_in(dir_, kCell);
+    dir_ = test::cell_run_dir("steady");
+    summary_ = test::run_cell_in(dir_, kCell);
   }
   static void TearDownTestSuite() { std::filesystem::remove_all(dir_); }
   static std::filesystem::path dir_;

@@ -23,7 +23,7 @@ nlohmann::json run_coulomb_cell(double tau) {
       "fluid.lambda=1.0", "cell.shear_stress=" + std::to_string(tau), "run.strain=5.0",
       "run.transient_strain=2.0", "run.output_interval=0.02", "run.snapshot_interval=0.0",
       "solver.tolerance=1e-4", "fluid.lubrication=none", "fluid.drag=none"};
-  const auto summary = testing::run_cell_summary("bagnold_" + std::to_string(tau), overrides);
+  const auto summary = test::run_cell_summary("bagnold_" + std::to_string(tau), overrides);
   return summary;
 }
 

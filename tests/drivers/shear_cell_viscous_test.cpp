@@ -26,15 +26,15 @@ namespace dilatant::shear_cell_viscous_test {
 namespace {
 
 std::vector<nlohmann::json> viscous_cells(const std::string& name, const std::string& mu0) {
-  return testing::run_cell_seeds(
+  return test::run_cell_seeds(
       name, {"cell.size=[8.0, 5.0, 9.0]", "fluid.lambda=0.3", "friction.mu0=" + mu0,
              "run.output_interval=0.02", "run.snapshot_interval=0.0", "solver.tolerance=1e-4",
              "fluid.lubrication=none", "fluid.drag=none"});
 }
 
 TEST(CellViscous, ViscosityDoesNotDependOnBoundaryFriction) {
-  const auto low = testing::seed_mean(viscous_cells("visc_mu01", "0.1"), "eta");
-  const auto high = testing::seed_mean(viscous_cells("visc_mu04", "0.4"), "eta");
+  const auto low = test::seed_mean(viscous_cells("visc_mu01", "0.1"), "eta");
+  const auto high = test::seed_mean(viscous_cells("visc_mu04", "0.4"), "eta");
   ASSERT_GT(low.error, 0.0);
   ASSERT_GT(high.error, 0.0);
   EXPECT_NEAR(low.mean, high.mean, 3.0 * std::hypot(low.error, high.error));
