@@ -1,5 +1,5 @@
 # Precompiled headers: the heavy header-only libraries parsed once per target
-# instead of once per source file (docs/testing.md "Compile time" has the
+# instead of once per source file (docs/testing.md "What changed" has the
 # measurements). Every source still includes what it uses; the header is only
 # forced in front, so a build with -DDILATANT_PCH=OFF compiles the same code
 # (and shows a missing include).

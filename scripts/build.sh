@@ -26,7 +26,7 @@
 # instantiates (GoogleTest's, Eigen's, fmt's, JSON's, std::string's) are
 # compiled once a batch instead of once a file: the release tree's compile 1,299
 # CPU-seconds file by file, about 650 in batches of 8, about 500 in batches of
-# 16 (docs/testing.md "Compile time"). Each test file keeps its helpers in a
+# 16 (docs/testing.md, "Third round"). Each test file keeps its helpers in a
 # namespace named after the file (dilatant::incline_test) so that two files'
 # helpers never meet in a batch. An edit-compile loop rebuilds a whole batch:
 #   DILATANT_UNITY=OFF scripts/build.sh     compiles each source alone.
