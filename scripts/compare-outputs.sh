@@ -18,7 +18,7 @@
 #   --accept-roundoff   accept files that differ only in numbers, each by at most
 #                       1e-14 relative (they are still listed, with the largest)
 # Exit status: 0 all identical, 1 some output differs, 2 bad usage or build failure.
-# The runs take about a minute on 2 cores (old and new side by side), plus the builds.
+# The runs take about a minute and a half on 2 cores (old and new side by side), plus the builds.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 root=$PWD
@@ -68,10 +68,15 @@ fi
 
 # The runs: small cells (stribeck, coulomb, thickened, 2 threads, resumed, a
 # continued flow curve), the committed configs of the paper's cell over a
-# little strain, and the two example scenes.
+# little strain, the wall-free (Lees-Edwards) cell under stress and under rate
+# control and resumed, a small sediment (dilatant jam), and the two example
+# scenes.
 # 10 x 6 x 12 R holds ~120 spheres and 4 slabs (so 2 threads share sweeps).
 cell=(--set 'cell.size=[10.0, 6.0, 12.0]' --set run.strain=1.0 --set run.transient_strain=0.3
   --set run.snapshot_interval=0.5 --set run.checkpoint_interval=0.25 --set fluid.lambda=30)
+# 8 x 6 x 8 R of examples/lees-edwards.toml: ~50 spheres, a second a run.
+lees_edwards=(examples/lees-edwards.toml --set 'cell.size=[8.0, 6.0, 8.0]' --set run.strain=0.5
+  --set run.transient_strain=0.2 --set run.snapshot_interval=0.25 --set run.checkpoint_interval=0.25)
 sweep_file=$work/continuation.toml
 cat >"$sweep_file" <<'TOML'
 [cell]
@@ -103,6 +108,14 @@ run_case() {  # run_case NAME SIDE BINARY -> outputs in $work/SIDE/NAME
     cell-resumed)
       "$bin" run "${cell[@]}" --set run.strain=0.5 --out "$out" -q
       "$bin" run "${cell[@]}" --resume --out "$out" -q ;;
+    lees-edwards-stress) "$bin" run "${lees_edwards[@]}" --out "$out" -q ;;
+    lees-edwards-rate) "$bin" run "${lees_edwards[@]}" --set cell.control=rate \
+      --set cell.shear_rate=1e-3 --out "$out" -q ;;
+    lees-edwards-resumed)
+      "$bin" run "${lees_edwards[@]}" --set run.strain=0.3 --out "$out" -q
+      "$bin" run "${lees_edwards[@]}" --resume --out "$out" -q ;;
+    sediment) "$bin" jam examples/jamming/sediment.toml --set 'sediment.size=[6.0, 6.0, 14.0]' \
+      --set sediment.samples=1 --out "$out" -q ;;
     example-thickened | example-viscous) # the committed configs of the paper's cell
       "$bin" run "examples/cell/${name#example-}.toml" --set run.strain=0.15 \
         --set run.transient_strain=0.05 --set run.snapshot_interval=0.1 --out "$out" -q ;;
@@ -114,10 +127,10 @@ run_case() {  # run_case NAME SIDE BINARY -> outputs in $work/SIDE/NAME
   esac
 }
 cases=(cell-stribeck cell-coulomb cell-thickened cell-threads2 cell-resumed
-  example-thickened example-viscous bench-coulomb sweep-continued scene-pile scene-incline)
+  lees-edwards-stress lees-edwards-rate lees-edwards-resumed sediment example-thickened example-viscous bench-coulomb sweep-continued scene-pile scene-incline)
 
 status=0
-printf '%-16s %s\n' run result
+printf '%-22s %s\n' run result
 for c in "${cases[@]}"; do
   start=$SECONDS
   run_case "$c" old "$old_bin" 2>"$work/$c.old.err" &
@@ -133,7 +146,7 @@ for c in "${cases[@]}"; do
     3) verdict="ROUND-OFF ONLY (see --accept-roundoff)"; status=1 ;;
     *) verdict=DIFFERENT; status=1 ;;
   esac
-  printf '%-16s %s (%s s)\n' "$c" "$verdict" $((SECONDS - start))
+  printf '%-22s %s (%s s)\n' "$c" "$verdict" $((SECONDS - start))
   printf '%s\n' "$report"
 done
 echo "compare-outputs: $([[ $status == 0 ]] && echo "all identical" || echo "outputs differ")"
