@@ -18,5 +18,5 @@ for run in example sweep; do
   cp out/docs/analysis/$run/{curves.csv,fits.json} out/docs/analysis/$run/*.{png,svg} \
     docs/analysis/$run/
 done
-/usr/bin/python3 scripts/analysis_truth_table.py out/docs/analysis/example \
+PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.analysis_truth_table out/docs/analysis/example \
   examples/analysis/truth.json >docs/analysis/example/table.md

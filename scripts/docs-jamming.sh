@@ -2,7 +2,7 @@
 # The jamming fractions of docs/jamming.md: `dilatant jam` with
 # examples/jamming/sediment.toml at every mu0 of the list, the shear-jamming
 # sweep examples/jamming/shear-jamming.toml, then the tables and the figure
-# (scripts/jamming_figures.py), the tables into data/jamming/ (dilatant
+# (dilatant.plots.jamming), the tables into data/jamming/ (dilatant
 # predict's) and the phase diagram of `dilatant predict --grid`. Resumable: a
 # mu0 whose summary.json exists is not run again, the sweep resumes.
 #   scripts/docs-jamming.sh
@@ -29,7 +29,7 @@ if [[ ${DILATANT_JAM_SHEAR:-1} != 0 ]]; then
   "$bin" sweep examples/jamming/shear-jamming-refine.toml --out "$out/shear-refine"
 fi
 mkdir -p "$docs"
-/usr/bin/python3 scripts/jamming_figures.py "$out" "$docs"
+PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.jamming "$out" "$docs"
 if [[ -f $out/shear/flowcurves.csv ]]; then cp "$out/shear/flowcurves.csv" "$docs/shear-flowcurves.csv"; fi
 if [[ -f $out/shear-refine/flowcurves.csv ]]; then
   cp "$out/shear-refine/flowcurves.csv" "$docs/shear-refine-flowcurves.csv"
@@ -39,11 +39,13 @@ fi
 # onset scale").
 cp "$docs/phi_max_bl.csv" data/jamming/phi_max_bl.csv
 "$bin" analyze docs/paper-reproduction/dense-window/flowcurves.csv --out "$out/onsets" --no-plots -q
-/usr/bin/python3 scripts/onset_table.py --header docs/paper-reproduction/dense-window/flowcurves.csv \
+PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.onset_table --header \
+  docs/paper-reproduction/dense-window/flowcurves.csv \
   "$out/onsets/curves.csv" literal "docs/paper-reproduction/dense-window (binary e2614d7)" \
   > data/jamming/onsets.csv.part && mv data/jamming/onsets.csv.part data/jamming/onsets.csv
 # The predictor against every flow curve of docs/paper-reproduction.
-/usr/bin/python3 scripts/predictor_checks.py "$bin" "$docs/predictor_checks.csv" docs/paper-reproduction
+PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.predictor_checks "$bin" "$docs/predictor_checks.csv" \
+  docs/paper-reproduction
 # The phase diagram of dilatant predict --grid (from the table as built).
 "$bin" predict --grid --out "$out/phase-diagram"
 cp "$out/phase-diagram/phase_diagram.png" "$docs/"

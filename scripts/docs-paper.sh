@@ -51,10 +51,10 @@ for sweep in ${DILATANT_PAPER_SWEEPS:-$sweeps}; do
   done
 done
 if [[ -f $docs/fig2/flowcurves.csv && -f $docs/coulomb/flowcurves.csv ]]; then
-  /usr/bin/python3 scripts/paper_figures.py "$docs"
+  PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.coulomb_control "$docs"
 fi
 if [[ -f $docs/newtonian-fluid/flowcurves.csv ]]; then
-  /usr/bin/python3 scripts/newtonian_figures.py "$docs"
+  PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.newtonian "$docs"
 fi
 if [[ -f $docs/dst-map/flowcurves.csv ]]; then
   # The map reads the tables of docs/jamming/ (scripts/docs-jamming.sh).
@@ -67,11 +67,11 @@ if [[ -f $docs/dst-map/flowcurves.csv ]]; then
   for more in dst-size dst-size-phi; do  # the paper's cell: open markers
     if [[ -f $docs/$more/flowcurves.csv ]]; then maps+=("$docs/$more=25x10x27"); fi
   done
-  /usr/bin/python3 scripts/dst_map.py "$docs/dst-map" dst_map "${maps[@]}"
+  PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.dst_map "$docs/dst-map" dst_map "${maps[@]}"
 fi
 if [[ -f $docs/lees-edwards-fig2/flowcurves.csv || -f $docs/lees-edwards-dst/flowcurves.csv ]]; then
   # Walls against Lees–Edwards (issue 16): table and figure in $docs/lees-edwards/.
-  /usr/bin/python3 scripts/lees_edwards_compare.py "$docs"
+  PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.lees_edwards "$docs"
 fi
 if [[ " ${DILATANT_PAPER_SWEEPS:-$sweeps} " == *" sc-scaling "* && -f $docs/sc-scaling/flowcurves.csv ]]; then
   # The s_c scaling's two ramps from saved states (docs/paper-reproduction.md
@@ -96,8 +96,8 @@ if [[ " ${DILATANT_PAPER_SWEEPS:-$sweeps} " == *" sc-scaling "* && -f $docs/sc-s
     mkdir -p "$docs/sc-scaling-ramp"
     cp "$out/sc-scaling-ramp/lambda=0.1"/{summary.json,timeseries.csv} "$docs/sc-scaling-ramp/" || status=$?
   done
-  /usr/bin/python3 scripts/sc_scaling.py "$docs"
+  PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.sc_scaling "$docs"
 fi
-/usr/bin/python3 scripts/paper_tables.py "$docs" >"$docs/tables.md.part"
+PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.paper_tables "$docs" >"$docs/tables.md.part"
 mv "$docs/tables.md.part" "$docs/tables.md"
 exit "$status"

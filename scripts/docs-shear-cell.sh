@@ -21,8 +21,8 @@ for run in viscous thickened mu0.2 mu0.3 mu0.4; do
   cp out/docs/$run/{summary.json,config.toml,timeseries.csv,velocity_profile.csv,sommerfeld_hist.csv} \
     docs/shear-cell/data/$run/
 done
-/usr/bin/python3 scripts/shear_cell_figures.py docs/shear-cell/fig1 \
+PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.shear_cell docs/shear-cell/fig1 \
   "lambda 1=out/docs/viscous" "lambda 100=out/docs/thickened"
-/usr/bin/python3 scripts/shear_cell_figures.py docs/shear-cell/walls \
+PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.shear_cell docs/shear-cell/walls \
   "mu0 0.1=out/docs/thickened" "mu0 0.2=out/docs/mu0.2" "mu0 0.3=out/docs/mu0.3" \
   "mu0 0.4=out/docs/mu0.4"

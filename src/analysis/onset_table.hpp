@@ -8,7 +8,7 @@
 //
 // with I_c the inertial number at the onset. The paper leaves the prefactor
 // open; we measure it, with I_c, on our own flow curves
-// (data/jamming/onsets.csv, scripts/onset_table.py, docs/jamming.md "The
+// (data/jamming/onsets.csv, python/dilatant/plots/onset_table.py, docs/jamming.md "The
 // onset scale"): C = gamma_dot_c s_c rho_p R^2 / (eta_f I_c^2). Rates are in
 // eta_f/(rho_p R^2), the unit of our flow tables.
 #include <filesystem>

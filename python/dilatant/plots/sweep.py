@@ -33,11 +33,12 @@ import sys
 from pathlib import Path
 
 if __package__:
-    from .common import RATE, VISCOSITY, NothingToPlot, exit_missing, read_rows, save
+    from .common import RATE, VISCOSITY, NothingToPlot, exit_missing, number, read_rows, save
 else:  # a script (the CLI: python3 sweep.py DIR): common.py lies beside it, a folder
     # not on the path under python3 -P or PYTHONSAFEPATH. Without matplotlib it exits 3.
     sys.path.insert(0, str(Path(__file__).resolve().parent))
-    from common import RATE, VISCOSITY, NothingToPlot, exit_missing, read_rows, save  # noqa
+    from common import (RATE, VISCOSITY, NothingToPlot, exit_missing, number,  # noqa
+                        read_rows, save)
 
 try:
     import tomllib
@@ -51,13 +52,6 @@ import numpy as np  # noqa: E402
 STRESS_UNIT = r"$\eta_f^2/(\rho_p R^2)$"
 MARKERS = ["o", "s", "^", "D", "v", "P", "X", "<", ">"]
 INVALID = "0.6"  # grey of points outside the model's validity
-
-
-def number(text):
-    try:
-        return float(text)
-    except (TypeError, ValueError):
-        return math.nan
 
 
 def stress_text(v):

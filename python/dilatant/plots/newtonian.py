@@ -1,7 +1,7 @@
 """Figures and numbers of the Newtonian branch (docs/paper-reproduction.md
 "The Newtonian branch"), from sweeps' flowcurves.csv tables:
 
-  newtonian_figures.py DOCS
+  PYTHONPATH=python python3 -m dilatant.plots.newtonian DOCS
     DOCS/newtonian-fluid/flowcurves.csv   flow curves with fluid forces, mu0 0.1 / 0.4
     DOCS/dense-window/flowcurves.csv      the literal model's dense window (optional)
     DOCS/newtonian-phi/flowcurves.csv     eta_N at several phi (optional)
@@ -22,7 +22,7 @@ import os
 import sys
 from pathlib import Path
 
-from plot_common import plt, read_rows, save
+from .common import plt, read_rows, save
 
 import numpy as np
 

@@ -1,8 +1,7 @@
-#!/usr/bin/env python3
 """`dilatant predict` held against every flow curve in docs/paper-reproduction
 (docs/jamming.md "Cross-checks"):
 
-  predictor_checks.py DILATANT OUT.csv DIR...
+  PYTHONPATH=python python3 -m dilatant.plots.predictor_checks DILATANT OUT.csv DIR...
 
 For each flowcurves.csv under the DIRs, each curve with two lambdas or more
 (same friction law and fluid forces, mu0, nominal phi, seed, s_c) gets its mean phi_bulk, the regime `dilatant predict`

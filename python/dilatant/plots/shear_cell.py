@@ -1,7 +1,7 @@
-#!/usr/bin/env python3
 """Figures and a table for docs/shear-cell.md from shear-cell run folders.
 
-Usage: shear_cell_figures.py OUT_DIR LABEL=RUN_DIR [LABEL=RUN_DIR ...]
+Usage: PYTHONPATH=python python3 -m dilatant.plots.shear_cell OUT_DIR \\
+           LABEL=RUN_DIR [LABEL=RUN_DIR ...]
 Writes OUT_DIR/profiles.{png,svg}, OUT_DIR/sommerfeld.{png,svg},
 OUT_DIR/timeseries.{png,svg} and OUT_DIR/table.md (numbers from summary.json).
 Needs Debian's python3-matplotlib and python3-numpy.
@@ -12,11 +12,9 @@ import math
 import sys
 from pathlib import Path
 
-import matplotlib
+from .common import plt, save
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import numpy as np
 
 
 def read_csv(path):
@@ -106,8 +104,7 @@ def main():
     ax_t.legend(fontsize=8)
     fig_t.tight_layout()
     for name, fig in (("profiles", fig_p), ("sommerfeld", fig_s), ("timeseries", fig_t)):
-        fig.savefig(out / f"{name}.png", dpi=130)
-        fig.savefig(out / f"{name}.svg")
+        save(fig, out, name, dpi=130, tight=False)
     table.append("")
     table.append(f"Made by dilatant {', '.join(sorted(versions))}; the settings of each run are "
                  "its config.toml (see scripts/docs-shear-cell.sh).")

@@ -1,9 +1,9 @@
-#!/usr/bin/env python3
 """Walls against Lees–Edwards at the same bulk fraction (issue 16; the paper's
 supplement): Fig. 2's phi 0.58 curves (mu0 0.1, 0.4) and the DST map's boundary
 ramps (mu0 1, 0.4; the 12 x 8 x 14 R and the paper's 25 x 10 x 27 R cells).
 
-    scripts/lees_edwards_compare.py [DOCS]     (default docs/paper-reproduction)
+    PYTHONPATH=python python3 -m dilatant.plots.lees_edwards [DOCS]
+                                               (default docs/paper-reproduction)
 
 Reads DOCS/{fig2,lees-edwards-fig2,dst-map,dst-size,lees-edwards-dst}/flowcurves.csv
 (scripts/docs-paper.sh copies them there) and writes DOCS/lees-edwards/:
@@ -17,22 +17,16 @@ import math
 import sys
 from pathlib import Path
 
+from .table_rows import number, read_rows
+
 SMALL, PAPER = "12x8x14", "25x10x27"
 
 
 def rows(path):
     if not path.is_file():
-        print(f"lees_edwards_compare: {path} not found (not run yet)", file=sys.stderr)
+        print(f"dilatant.plots.lees_edwards: {path} not found (not run yet)", file=sys.stderr)
         return []
-    with path.open(newline="") as f:
-        return list(csv.DictReader(f))
-
-
-def number(text):
-    try:
-        return float(text)
-    except (TypeError, ValueError):
-        return math.nan
+    return read_rows(path)
 
 
 def point(row):
@@ -112,10 +106,8 @@ def write_table(pairs, out):
 
 
 def plot(pairs, out_dir):
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    # Imported here: the table above is written without matplotlib.
+    from .common import plt, save
 
     panels = [("fig2", PAPER, "Fig. 2, phi 0.58, 25 x 10 x 27 R"),
               ("dst", SMALL, "DST boundary, 12 x 8 x 14 R"),
@@ -145,10 +137,7 @@ def plot(pairs, out_dir):
     fig.suptitle("Walls (filled) and Lees–Edwards (open) at phi_bulk 0.575-0.58; "
                  "x: jammed (drawn above the last flowing point)", fontsize=10)
     fig.tight_layout()
-    for ext in ("png", "svg"):
-        tmp = out_dir / f"comparison.part.{ext}"
-        fig.savefig(tmp, dpi=110)
-        tmp.rename(out_dir / f"comparison.{ext}")
+    save(fig, out_dir, "comparison", dpi=110, tight=False)
 
 
 def main():
@@ -158,7 +147,7 @@ def main():
     pairs = collect(docs)
     n = write_table(pairs, out_dir / "comparison.csv")
     unpaired = sum(1 for v in pairs.values() if len(v) < 2)
-    print(f"lees_edwards_compare: {n} pairs in {out_dir / 'comparison.csv'}"
+    print(f"dilatant.plots.lees_edwards: {n} pairs in {out_dir / 'comparison.csv'}"
           f"{f'; {unpaired} points without a counterpart (not run, or skipped after a jam)' if unpaired else ''}")
     plot(pairs, out_dir)
 

@@ -3,7 +3,7 @@ a `dilatant sweep` with continuation placed at its (mu0, phi_bulk) and marked
 by what it did, over the jamming fractions of docs/jamming.md (the paper's
 Fig. 4 with simulations on it).
 
-  dst_map.py DOCS NAME SWEEP[=CELL] [SWEEP[=CELL] ...]
+  PYTHONPATH=python python3 -m dilatant.plots.dst_map DOCS NAME SWEEP[=CELL] [SWEEP[=CELL] ...]
     CELL labels a sweep run in another cell than the map's (e.g.
     dst-size=25x10x27): its ramps are drawn as large open markers.
     reads  SWEEP/flowcurves.csv           the ramps (examples/paper/dst-map.toml,
@@ -27,9 +27,19 @@ import sys
 from collections import defaultdict
 from pathlib import Path
 
-from plot_common import plt, read_rows, save
+from .common import plt, read_rows, save
 
-ROOT = Path(__file__).resolve().parent.parent
+
+def source_tree():
+    """The checkout that holds data/jamming/ (this file is python/dilatant/plots/ in
+    it, or a copy in <build>/python/dilatant/plots/); else the working folder."""
+    for folder in Path(__file__).resolve().parents:
+        if (folder / "data" / "jamming" / "phi_max_bl.csv").is_file():
+            return folder
+    return Path.cwd()
+
+
+ROOT = source_tree()
 MARKERS = {"dst": ("v", "tab:red"), "dst?": ("v", "tab:orange"), "jammed": ("x", "k"),
            "flows": ("o", "tab:blue")}
 

@@ -1,10 +1,10 @@
-#!/usr/bin/env python3
 """Onsets of thickening measured on a sweep's flow curves, as the table
 `dilatant predict` compiles in (data/jamming/onsets.csv, docs/jamming.md
 "The onset scale").
 
     dilatant analyze SWEEP/flowcurves.csv --out AN --no-plots
-    python3 scripts/onset_table.py SWEEP/flowcurves.csv AN/curves.csv MODEL SOURCE >> onsets.csv
+    PYTHONPATH=python python3 -m dilatant.plots.onset_table SWEEP/flowcurves.csv AN/curves.csv \\
+        MODEL SOURCE >> onsets.csv
 
 For every curve of AN/curves.csv with an onset (eta above 1.1 x its Newtonian
 plateau: docs/analysis.md), the inertial number at the onset is interpolated

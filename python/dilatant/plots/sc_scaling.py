@@ -2,7 +2,7 @@
 item 3): the literal model at nominal phi 0.62 (phi_bulk 0.607-0.615), mu0
 0.4, stress ramps for s_c = 5e-6 and 5e-5 (and the s_c 5e-4 jam).
 
-  sc_scaling.py DOCS
+  PYTHONPATH=python python3 -m dilatant.plots.sc_scaling DOCS
     reads  DOCS/sc-scaling/flowcurves.csv            the ramps to lambda 100
                                                      (examples/paper/sc-scaling.toml)
            DOCS/sc-scaling/cold-starts/*.json        the jams' cold starts
@@ -23,11 +23,10 @@ phi) need not.
 """
 import glob
 import json
-import os
 import sys
 from pathlib import Path
 
-from plot_common import RATE, VISCOSITY, plt, read_rows, save
+from .common import RATE, VISCOSITY, plt, read_rows, save
 
 COLOURS = {"5e-06": "tab:blue", "5e-05": "tab:red", "0.0005": "tab:green"}
 

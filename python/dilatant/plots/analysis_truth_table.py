@@ -1,7 +1,7 @@
-#!/usr/bin/python3
 """Recovered vs true values of the analysis example, as Markdown tables.
 
-Usage: analysis_truth_table.py OUT_DIR TRUTH_JSON > table.md
+Usage: PYTHONPATH=python python3 -m dilatant.plots.analysis_truth_table \\
+           OUT_DIR TRUTH_JSON > table.md
 OUT_DIR is a `dilatant analyze` output folder of examples/analysis/manifest.toml,
 TRUTH_JSON the generator's examples/analysis/truth.json. Standard library only.
 """

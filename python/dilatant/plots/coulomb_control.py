@@ -1,9 +1,9 @@
-#!/usr/bin/python3
 """The comparison figures of docs/paper-reproduction.md that no single sweep
 draws: the Stribeck curves of fig2 against the `coulomb` control, with the share
 of contacts beyond s_lim under them (where the model's validity ends).
 
-Usage: paper_figures.py DOCS_DIR      (DOCS_DIR = docs/paper-reproduction)
+Usage: PYTHONPATH=python python3 -m dilatant.plots.coulomb_control DOCS_DIR
+       (DOCS_DIR = docs/paper-reproduction)
 
 Reads DOCS_DIR/fig2/flowcurves.csv and DOCS_DIR/coulomb/flowcurves.csv (copied
 there by scripts/docs-paper.sh) and writes DOCS_DIR/control.png and .svg.
@@ -12,8 +12,7 @@ import math
 import sys
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from plot_common import RATE, VISCOSITY, plt, read_rows, save  # noqa: E402
+from .common import RATE, VISCOSITY, plt, read_rows, save
 
 
 def value(row, key):

@@ -1,7 +1,6 @@
-#!/usr/bin/python3
 """Markdown tables of the paper reproduction, from the sweep tables in docs/.
 
-Usage: paper_tables.py DOCS_DIR > DOCS_DIR/tables.md
+Usage: PYTHONPATH=python python3 -m dilatant.plots.paper_tables DOCS_DIR > DOCS_DIR/tables.md
 
 DOCS_DIR holds one folder per sweep (fig2, coulomb, boundary, dst-checks), each with
 the `flowcurves.csv` (and `curves.csv`, the regime per curve) that
@@ -9,11 +8,12 @@ scripts/docs-paper.sh copied from its sweep folder. Every number printed here
 is read from those files; nothing is computed but tau = lambda^2 and sums of
 run times. Points outside the model's validity are marked, never dropped.
 """
-import csv
 import math
 import re
 import sys
 from pathlib import Path
+
+from .table_rows import number, read_rows
 
 SWEEPS = [
     ("fig2", "Fig. 2: flow curves for five mu0 at phi 0.58 and mu0 0.3 at phi 0.59"),
@@ -28,18 +28,6 @@ SWEEPS = [
 ]
 
 
-def rows_of(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
-
-
-def num(text):
-    try:
-        return float(text)
-    except (TypeError, ValueError):
-        return math.nan
-
-
 def fmt(v, digits=3):
     if not math.isfinite(v):
         return ""
@@ -47,7 +35,7 @@ def fmt(v, digits=3):
 
 
 def with_error(row, key):
-    v, e = num(row.get(key)), num(row.get(key + "_err"))
+    v, e = number(row.get(key)), number(row.get(key + "_err"))
     if not math.isfinite(v):
         return ""
     return f"{fmt(v)} ± {fmt(e, 2)}" if math.isfinite(e) else fmt(v)
@@ -61,7 +49,7 @@ def point_state(row):
     if row.get("valid") == "true":
         return "valid"
     reasons = []
-    if num(row.get("frac_over_slim")) > 0.05:
+    if number(row.get("frac_over_slim")) > 0.05:
         reasons.append("s > s_lim")
     if row.get("profile_consistent") == "false":
         reasons.append("profile")
@@ -81,17 +69,18 @@ def points_table(rows):
             "| gamma_dot_bulk / gap | I | start | strain | run time | state |")
     lines = [head, "|" + "---|" * 16]
     # One curve after the other, each in increasing stress.
-    for r in sorted(rows, key=lambda r: (num(r.get("phi")), num(r.get("cell.seed", "1")),
-                                         num(r.get("mu0")), num(r.get("lambda")))):
-        lam = num(r.get("lambda"))
-        bulk, gap = num(r.get("gamma_dot_bulk")), num(r.get("gamma_dot_gap"))
+    for r in sorted(rows, key=lambda r: (number(r.get("phi")), number(r.get("cell.seed", "1")),
+                                         number(r.get("mu0")), number(r.get("lambda")))):
+        lam = number(r.get("lambda"))
+        bulk, gap = number(r.get("gamma_dot_bulk")), number(r.get("gamma_dot_gap"))
         ratio = fmt(bulk / gap, 2) if gap > 0 else ""
         lines.append("| " + " | ".join([
-            r.get("phi", ""), fmt(num(r.get("phi_bulk"))), r.get("cell.seed", "1"),
+            r.get("phi", ""), fmt(number(r.get("phi_bulk"))), r.get("cell.seed", "1"),
             r.get("mu0", ""), fmt(lam), fmt(lam * lam),
-            with_error(r, "gamma_dot"), with_error(r, "eta"), fmt(num(r.get("frac_bl")), 2),
-            fmt(num(r.get("frac_over_slim")), 2), ratio, fmt(num(r.get("inertial_number")), 2),
-            start_of(r), fmt(num(r.get("strain"))), fmt(num(r.get("wall_time_s")), 3) + " s",
+            with_error(r, "gamma_dot"), with_error(r, "eta"), fmt(number(r.get("frac_bl")), 2),
+            fmt(number(r.get("frac_over_slim")), 2), ratio,
+            fmt(number(r.get("inertial_number")), 2),
+            start_of(r), fmt(number(r.get("strain"))), fmt(number(r.get("wall_time_s")), 3) + " s",
             point_state(r)]) + " |")
     return lines
 
@@ -99,13 +88,13 @@ def points_table(rows):
 def curves_table(path):
     lines = ["| curve | phi | eta_N | onset stress | n (95% interval) | regime | Bagnold |",
              "|---|---|---|---|---|---|---|"]
-    for c in rows_of(path):
-        n = num(c.get("n"))
-        interval = f"{fmt(n)} ({fmt(num(c['n_low']))}-{fmt(num(c['n_high']))})" \
+    for c in read_rows(path):
+        n = number(c.get("n"))
+        interval = f"{fmt(n)} ({fmt(number(c['n_low']))}-{fmt(number(c['n_high']))})" \
             if math.isfinite(n) else ""
         lines.append("| " + " | ".join([
-            c["sample"], c["phi"], fmt(num(c.get("eta_newtonian"))),
-            fmt(num(c.get("onset_stress"))), interval,
+            c["sample"], c["phi"], fmt(number(c.get("eta_newtonian"))),
+            fmt(number(c.get("onset_stress"))), interval,
             c["regime"] + (f" ({c['dst_evidence']})" if c.get("dst_evidence") else ""),
             c.get("bagnold", "")]) + " |")
     return lines
@@ -118,7 +107,7 @@ def main():
     docs = Path(sys.argv[1])
     out = ["# Paper reproduction: every point",
            "",
-           "Written by `scripts/paper_tables.py` from the `flowcurves.csv` and",
+           "Written by `dilatant.plots.paper_tables` from the `flowcurves.csv` and",
            "`curves.csv` beside this file (`bash scripts/docs-paper.sh`). Paper units:",
            "gamma_dot in eta_f/(rho_p R^2), eta in eta_f, tau = lambda^2 in",
            "eta_f^2/(rho_p R^2). `start`: cold (new packing) or the lambda whose final",
@@ -128,9 +117,10 @@ def main():
         table = docs / name / "flowcurves.csv"
         if not table.exists():
             continue
-        rows = rows_of(table)
+        rows = read_rows(table)
         versions = sorted({r["version"] for r in rows if r.get("version")})
-        total = sum(num(r.get("wall_time_s")) for r in rows if math.isfinite(num(r.get("wall_time_s"))))
+        times = [number(r.get("wall_time_s")) for r in rows]
+        total = sum(t for t in times if math.isfinite(t))
         out += [f"## {title}", "",
                 f"`{name}/flowcurves.csv`, settings in `{name}/sweep.toml`; dilatant "
                 f"{', '.join(versions) or '?'}; {len(rows)} points, "

@@ -1,6 +1,6 @@
 """The table and figure of docs/jamming.md from `dilatant jam` runs:
 
-  jamming_figures.py OUT DOCS
+  PYTHONPATH=python python3 -m dilatant.plots.jamming OUT DOCS
     OUT/mu0-*/summary.json    one run per mu0 (scripts/docs-jamming.sh)
     OUT/shear/flowcurves.csv  the shear-jamming sweep (optional,
                               examples/jamming/shear-jamming.toml)
@@ -27,7 +27,7 @@ import os
 import sys
 from pathlib import Path
 
-from plot_common import plt, save
+from .common import plt, save
 
 # The shear-jamming sweeps under OUT: examples/jamming/shear-jamming.toml and
 # the points between its brackets, examples/jamming/shear-jamming-refine.toml.
