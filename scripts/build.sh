@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Configures and builds dilatant with Ninja on all cores.
-#   scripts/build.sh [release|sanitize|tsan] [target...]   (default: release, all targets)
+#   scripts/build.sh [release|sanitize|tsan|coverage] [target...]   (default: release, all targets)
 #     release  -> build/           Release (g++, warnings are errors); CLI, tests,
 #                                  benchmarks, Python module (build/python)
 #     sanitize -> build-sanitize/  ASan + UBSan (clang); the CLI, the tests and the
@@ -17,6 +17,9 @@
 #                                  barriers; scripts/tsan.sh runs it); the CLI and
 #                                  the threaded suites' executable only are meant
 #                                  to be built there (scripts/tsan.sh names them)
+#     coverage -> build-coverage/  clang's source-based line coverage, the
+#                                  sanitizer trees' other settings; for
+#                                  scripts/coverage-proof.sh, not CI
 # The sanitizer trees build with -O1 and line tables only: what a sanitizer
 # report needs (file:line in every frame), at a fraction of full -g's compile
 # time. Warnings are g++'s business (release); clang's differ in detail.
@@ -58,8 +61,13 @@ case "${1:-release}" in
     dir=build-tsan
     options=("${sanitizer_tree[@]}" -DDILATANT_TSAN=ON -DCMAKE_UNITY_BUILD=OFF)
     ;;
+  coverage)
+    dir=build-coverage
+    options=("${sanitizer_tree[@]}" -DDILATANT_COVERAGE=ON -DCMAKE_UNITY_BUILD="$unity"
+      -DCMAKE_UNITY_BUILD_BATCH_SIZE=16)
+    ;;
   *)
-    echo "usage: $0 [release|sanitize|tsan] [target...]" >&2
+    echo "usage: $0 [release|sanitize|tsan|coverage] [target...]" >&2
     exit 2
     ;;
 esac

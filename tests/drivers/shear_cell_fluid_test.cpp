@@ -9,6 +9,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "app/cli_runner.hpp"
 #include "drivers/shear_cell.hpp"
 #include "drivers/shear_cell_run.hpp"
 #include "io/config.hpp"
@@ -44,6 +45,34 @@ TEST(ShearCellFluid, EnergyBudgetClosesWithFilmsAndDrag) {
   // particles' fluctuations on balance.
   EXPECT_GT(j["power_lubrication"].get<double>(), 0.0);
   EXPECT_GT(j["power_drag"].get<double>(), 0.0);
+}
+
+// The fluid forces on two threads: the films enter each contact's local
+// problem in the parallel solve (solver/local_problem.hpp), the drag acts
+// against the cell's mean flow, set each step; two threads must give the bits
+// of one.
+// The size is ShearCellRun.TwoThreadsGiveTheSameBitsAsOne's, which checks that
+// it makes at least 4 slabs, so both threads have work in each colour. Short,
+// so that ThreadSanitizer and the sanitizer stage run the fluid code on
+// threads without the long energy-budget run above (tests/tsan/release-only.txt);
+// rows every 0.002 strain, so that the steady window's 50 rows are enough for
+// the block error bars and the steadiness check (measure/steadiness.hpp) to run.
+TEST(ShearCellFluid, TwoThreadsGiveTheSameBitsAsOne) {
+  test::TempDir dir;
+  std::vector<std::string> cell = kCell;
+  cell.insert(cell.end(), {"cell.size=[6.0, 5.0, 11.0]", "run.strain=0.2",
+                           "run.transient_strain=0.1", "run.output_interval=0.002"});
+  const auto run = [&](const char* threads, const char* name) {
+    std::vector<std::string> c = cell;
+    c.push_back(threads);
+    run_shear_cell(default_cell_config(c),
+                   CellRunOptions{RunOptions{dir.path() / name, true}, false, nullptr});
+    return dir.path() / name;
+  };
+  const auto one = run("solver.threads=1", "one");
+  const auto two = run("solver.threads=2", "two");
+  for (const char* f : {"timeseries.csv", "contacts.csv", "checkpoint.bin"})
+    EXPECT_EQ(test::read_text(one / f), test::read_text(two / f)) << f;
 }
 
 // phi_definition = "box" fills Lx Ly Lz to cell.phi, and both counts are

@@ -23,6 +23,11 @@ TEST(PointFolder, TellsFreshResumableAndDonePointsApart) {
   EXPECT_EQ(inspect_point_folder(p, folder), PointState::Resumable);
   dir.write(p.folder + "/summary.json", "{}");
   EXPECT_EQ(inspect_point_folder(p, folder), PointState::Done);
+  // Killed after writing its config.toml, before its first checkpoint: it
+  // starts again from the beginning.
+  const SweepPoint& q = plan.points[0];
+  dir.write(q.folder + "/config.toml", resolved_toml(q.config));
+  EXPECT_EQ(inspect_point_folder(q, dir.path() / q.folder), PointState::Fresh);
 }
 
 TEST(PointFolder, ARunOfAnotherConfigurationIsRefusedNamingTheKey) {
