@@ -9,11 +9,11 @@
 #include <tuple>
 #include <utility>
 
+#include "boundary/wall_forces.hpp"
 #include "drivers/model_setup.hpp"
 #include "measure/bulk_fraction.hpp"
 #include "measure/particle_stress.hpp"
 #include "measure/run_cost.hpp"
-#include "measure/wall_forces.hpp"
 
 namespace dilatant {
 
@@ -182,7 +182,7 @@ const StepReport& ShearCell::step() {
   // fluid neither drives nor brakes it. Under Lees–Edwards: the homogeneous
   // profile of the box, centred at Lz/2 (mean_flow()).
   if (fluid_) {
-    const MeanShearFlow flow = mean_flow();
+    const ShearFlow flow = mean_flow();
     fluid_->set_ambient({.shear_rate = flow.shear_rate, .z0 = flow.z0});
   }
   try {
@@ -222,7 +222,7 @@ const StepReport& ShearCell::step() {
   return last_;
 }
 
-MeanShearFlow ShearCell::mean_flow() const {
+ShearFlow ShearCell::mean_flow() const {
   const ShearCellState& s = state_;
   const double lz = config_.cell()->size[2];
   if (s.is_lees_edwards()) return {.shear_rate = s.world.box.shear_velocity / lz, .z0 = 0.5 * lz};

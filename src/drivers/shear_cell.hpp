@@ -100,7 +100,7 @@ class ShearCell {
   double accumulate(const StepReport& report, double velocity);
   // The mean flow the drag and the kinetic stress subtract: the no-slip
   // profile between the walls, or the box's homogeneous shear about Lz/2.
-  MeanShearFlow mean_flow() const;
+  ShearFlow mean_flow() const;
   void close_row();
 
   Config config_;

@@ -16,9 +16,9 @@
 
 #include <cmath>
 
+#include "boundary/wall_forces.hpp"
 #include "drivers/shear_cell.hpp"
 #include "measure/particle_stress.hpp"
-#include "measure/wall_forces.hpp"
 
 namespace dilatant::shear_cell_stress_test {
 namespace {
