@@ -121,7 +121,7 @@ void bind_shear_cell(py::module_& m) {
       .def_property_readonly("dt", [](const ShearCell& c) { return c.state().dt; })
       .def_property_readonly("jammed", [](const ShearCell& c) { return c.state().jammed; })
       .def_property_readonly("wall_velocity",
-                             [](const ShearCell& c) { return c.state().boundary_velocity(); })
+                             [](const ShearCell& c) { return c.state().drive_speed(); })
       .def_property_readonly("config", &ShearCell::config)
       .def_property_readonly(
           "positions", [](const ShearCell& c) { return vectors(c.state().world.bodies.position); })
@@ -139,7 +139,7 @@ void bind_shear_cell(py::module_& m) {
           [](const ShearCell& c) {
             // Without walls (Lees–Edwards) the list is empty: every body is a particle.
             std::vector<std::uint8_t> g(c.state().world.bodies.size(), 0);
-            const auto& groups = c.state().walls.groups();
+            const auto groups = c.state().drive->body_groups();
             for (std::size_t i = 0; i < groups.size(); ++i)
               g[i] = static_cast<std::uint8_t>(groups[i]);
             return values(g);

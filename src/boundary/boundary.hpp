@@ -22,13 +22,11 @@
 // Contacts touching a body of the boundary (body_groups()) obey the boundary's
 // own contact law (contact_law()), e.g. the walls' rough-grain Coulomb friction.
 //
-// A Lees–Edwards boundary fits the same seam: its degree of freedom is the
-// strain rate under stress control (predict: the rate's free update from the
-// applied stress; solve_block: the rate given the impulses of the contacts
-// across z), and it has no bodies of its own. It will in addition shift the
-// images across z by the accumulated strain in x and offset their velocity by
-// the boundary speed, which contact detection (detection/) and the relative
-// velocity of a contact must read from it; docs/architecture.md says where.
+// A cell's drive (drive.hpp) hands the stepper its block through this seam,
+// or none: the Lees–Edwards images (image_drive.hpp) keep their speed
+// constant within a step and have no bodies, so they take no part in the
+// contact problem; their offset and speed live in the PeriodicBox, which
+// detection and the contacts' relative velocity read.
 #include <span>
 #include <vector>
 

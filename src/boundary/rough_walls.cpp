@@ -3,6 +3,9 @@
 namespace dilatant {
 
 void RoughWalls::predict(Bodies& bodies, double dt) {
+  // Work of the drive over the prediction, F dt (V + V_free)/2: exactly the
+  // wall's kinetic-energy gain before the contacts act.
+  drive_work_ = top_.drive_force * dt * (top_.velocity + 0.5 * dt * top_.drive_force / top_.mass);
   free_velocity_ = top_.velocity + dt * top_.drive_force / top_.mass;
   for (std::int32_t s : top_.spheres) bodies.velocity[s] = Vec3(free_velocity_, 0.0, 0.0);
 }

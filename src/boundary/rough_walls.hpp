@@ -45,14 +45,18 @@ class RoughWalls final : public Boundary {
   // Kinetic energy of the top wall as a rigid body, M V^2 / 2 (its spheres have
   // infinite mass in Bodies and count nothing there).
   double kinetic_energy() const { return 0.5 * top_.mass * top_.velocity * top_.velocity; }
+  // Work of the drive force on the top wall over the last step, F dt (V + V_free)/2
+  // (predict()): all it feeds in, the contacts' work on the wall being theirs.
+  double drive_work() const { return drive_work_; }
 
  private:
   std::vector<BodyGroup> group_;
   SlidingWall top_;
   FrictionLaw law_ = CoulombLaw{};
-  // Of the current step: V + dt F / M, and the contacts on the top wall with the
+  // Of the current step: V + dt F / M, the drive's work, and the contacts on the top wall with the
   // sign of their impulse on it (+1 if the wall sphere is body i, -1 if it is the partner).
   double free_velocity_ = 0.0;
+  double drive_work_ = 0.0;
   std::vector<std::pair<std::int32_t, double>> top_contacts_;
 };
 

@@ -10,10 +10,9 @@
 #include <utility>
 
 #include "drivers/model_setup.hpp"
-#include "measure/bulk_fraction.hpp"
+#include "drivers/shear_cell_summary.hpp"
 #include "measure/particle_stress.hpp"
 #include "measure/run_cost.hpp"
-#include "measure/wall_forces.hpp"
 
 namespace dilatant {
 
@@ -35,9 +34,7 @@ void start_measurements(const Config& config, ShearCellState& s) {
 
 ShearCellState new_state(const Config& config) {
   ShearCellState s;
-  s.world = config.cell()->boundary == CellBoundary::LeesEdwards
-                ? build_lees_edwards_cell(config, s.geometry, s.lees_edwards)
-                : build_shear_cell(config, s.geometry, s.walls);
+  s.world = build_cell(config, s.geometry, s.drive);
   start_measurements(config, s);
   return s;
 }
@@ -54,7 +51,7 @@ ShearCell::ShearCell(Config config, ShearCellState state)
       stepper_(make_friction_law(config_.friction, units_.eta_f),
                make_solver_settings(config_.solver), state_.dt > 0.0 ? state_.dt : 1.0) {
   // The walls are rough glued grains: Coulomb friction (docs/shear-cell.md).
-  state_.walls.set_contact_law(CoulombLaw{config_.cell()->wall_friction, units_.eta_f});
+  state_.drive->set_contact_law(CoulombLaw{config_.cell()->wall_friction, units_.eta_f});
   stepper_.restore_contact_memory(state_.contact_memory);
   stepper_.set_fluid_forces(fluid_.get());
   cost_.threads = stepper_.settings().threads;
@@ -69,31 +66,19 @@ ShearCell ShearCell::continued(Config config, const std::filesystem::path& check
   ShearCellState previous = load_checkpoint(checkpoint);
   const CellConfig& cell = *config.cell();
   const Vec3& size = cell.size;
-  // The same boundary too: a wall cell's state cannot continue without walls,
-  // nor a Lees–Edwards state (whose z is periodic, so Lz must match) with them.
-  const bool le = cell.boundary == CellBoundary::LeesEdwards;
-  const bool same_kind = le ? previous.is_lees_edwards() && previous.world.box.length[2] == size[2]
-                            : !previous.is_lees_edwards() && !previous.walls.top().spheres.empty();
+  // The same drive too, which takes this config's control (Drive::adopt): a
+  // wall cell's state cannot continue without walls, nor a Lees–Edwards state
+  // with them.
   if (previous.world.box.length[0] != size[0] || previous.world.box.length[1] != size[1] ||
-      !same_kind)
+      !previous.drive->adopt(drive_spec(config), previous.world))
     throw std::runtime_error(fmt::format(
         "{}: not a state of this cell (cell.size = [{}, {}, {}], cell.boundary = \"{}\")",
-        checkpoint.string(), size[0], size[1], size[2], le ? "lees-edwards" : "walls"));
+        checkpoint.string(), size[0], size[1], size[2],
+        cell.boundary == CellBoundary::LeesEdwards ? "lees-edwards" : "walls"));
   ShearCellState s;
   s.world = std::move(previous.world);
   s.world.time = 0.0;
-  s.walls = std::move(previous.walls);
-  if (le) {
-    // The images keep their offset and speed; the drive is this config's
-    // (a rate-controlled continuation imposes its own rate from the first step).
-    LeesEdwardsDrive drive = previous.lees_edwards.drive();
-    drive.drive_force = cell.shear_stress * drive.area;
-    drive.rate_controlled = cell.control == ShearControl::Rate;
-    drive.rate = drive.rate_controlled ? cell.shear_rate : 0.0;
-    if (cell.boundary_mass > 0.0) drive.mass = cell.boundary_mass;
-    s.lees_edwards = LeesEdwards(drive);
-    if (drive.rate_controlled) s.world.box.shear_velocity = drive.rate * size[2];
-  }
+  s.drive = std::move(previous.drive);
   s.geometry = previous.geometry;
   s.dt = previous.dt;
   s.contact_memory = std::move(previous.contact_memory);
@@ -103,8 +88,9 @@ ShearCell ShearCell::continued(Config config, const std::filesystem::path& check
 
 // Automatic time step (solver.dt = 0): no body may move more than
 // c = solver.max_displacement (default 0.02) times r_min in one step, neither at
-// its current speed nor, from rest, under the wall's drive:
-//     dt = min(c r_min / v_max, sqrt(2 c r_min / a_wall)).
+// its current speed nor under the drive (its own bound, Drive::time_step_bound;
+// from rest under a force, sqrt(2 c r_min / a)):
+//     dt = min(c r_min / v_max, dt_drive).
 // An overlap left by an unconverged step is pushed out at |g|/dt, so a shorter
 // step pushes it faster; the fastest body sets the next step, so past a point
 // speed and step feed each other until the run blows up (a cold start at
@@ -120,25 +106,13 @@ ShearCell::StepChoice ShearCell::choose_dt() const {
     r_min = std::min(r_min, b.radius[i]);
   }
   const double c = config_.solver.max_displacement;
-  // The drive's acceleration: the top wall's F / M, or the Lees–Edwards
-  // boundary's tau A / M (boundary/lees_edwards.hpp). Under rate control the
-  // boundary does not accelerate; its images move at V, and the bound is
-  // then that of a body at V, c r_min / V.
-  double dt_drive;
-  if (!state_.is_lees_edwards()) {
-    const SlidingWall& wall = state_.walls.top();
-    dt_drive = std::sqrt(2.0 * c * r_min * wall.mass / wall.drive_force);
-  } else if (const double a = state_.lees_edwards.drive_acceleration(); a > 0.0) {
-    dt_drive = std::sqrt(2.0 * c * r_min / a);
-  } else {
-    dt_drive = c * r_min / std::abs(state_.world.box.shear_velocity);
-  }
+  const double dt_drive = state_.drive->time_step_bound(state_.world, c * r_min);
   const double dt_speed = v_max > 0.0 ? c * r_min / v_max : dt_drive;
   return {std::min(dt_drive, dt_speed), dt_drive <= dt_speed, dt_drive, c * r_min / dt_drive};
 }
 
 double ShearCell::total_kinetic_energy() const {
-  return state_.world.bodies.kinetic_energy() + state_.walls.kinetic_energy();
+  return state_.world.bodies.kinetic_energy() + state_.drive->kinetic_energy();
 }
 
 double ShearCell::fraction_done() const {
@@ -156,37 +130,23 @@ const StepReport& ShearCell::step() {
   // Never a silent bad number: a state that has blown up stops the run (a
   // sweep records the point as failed with this message).
   if (!std::isfinite(choice.dt) || choice.dt < kCollapsedStep * choice.dt_drive ||
-      !std::isfinite(s.boundary_velocity())) {
+      !std::isfinite(s.drive_speed())) {
     throw std::runtime_error(fmt::format(
         "numerical blow-up at step {} (strain {:.4g}): {} speed {:.3g}, time step {:.3g} "
         "against the drive's {:.3g}; the run is stopped",
-        s.steps, s.strain, s.is_lees_edwards() ? "boundary" : "wall", s.boundary_velocity(),
-        choice.dt, choice.dt_drive));
+        s.steps, s.strain, s.drive->mover(), s.drive_speed(), choice.dt, choice.dt_drive));
   }
   s.dt = choice.dt;
   cost_.steps_dt_by_drive += choice.by_drive ? 1.0 : 0.0;
   stepper_.set_dt(s.dt);
   stepper_.set_max_push_out(choice.max_push_out);
-  const SlidingWall& wall = s.walls.top();
   if (s.interval.steps == 0.0) s.interval.kinetic_start = total_kinetic_energy();
-  // Work of the drive over the prediction, F dt (V + V_free)/2: exactly the
-  // wall's kinetic-energy gain before the contacts act (the Lees–Edwards
-  // boundary's is added once the step's stress is known, in accumulate()).
-  const double drive_work =
-      s.is_lees_edwards()
-          ? 0.0
-          : wall.drive_force * s.dt * (wall.velocity + 0.5 * s.dt * wall.drive_force / wall.mass);
-  // The drag is relative to the linear profile between the walls' mean
-  // surfaces (fluid/stokes_drag.hpp) at the wall speed of the step's start: the
-  // profile a steady flow without slip has (docs/shear-cell.md), so that the
-  // fluid neither drives nor brakes it. Under Lees–Edwards: the homogeneous
-  // profile of the box, centred at Lz/2 (mean_flow()).
-  if (fluid_) {
-    const MeanShearFlow flow = mean_flow();
-    fluid_->set_ambient({.shear_rate = flow.shear_rate, .z0 = flow.z0});
-  }
+  // The drag is relative to the drive's mean flow at the step's start
+  // (fluid/stokes_drag.hpp): the profile a steady flow has, so that the fluid
+  // neither drives nor brakes it.
+  if (fluid_) fluid_->set_ambient(s.drive->mean_flow(s.world));
   try {
-    last_ = stepper_.step(s.world, &s.boundary());
+    last_ = stepper_.step(s.world, s.drive->contact_block());
   } catch (const NumericalFault& fault) {
     throw NumericalFault(fmt::format("step {} (strain {:.4g}): {}; the run is stopped", s.steps + 1,
                                      s.strain, fault.what()));
@@ -200,14 +160,15 @@ const StepReport& ShearCell::step() {
   ++s.steps;
   // The speed the strain advances with: the wall's at the step's end, or the
   // images' of the step (constant within it; respond() changes it below).
-  const double velocity = s.boundary_velocity();
+  const double velocity = s.drive_speed();
   s.strain += velocity * s.dt / lz;
 
   const auto measure_start = std::chrono::steady_clock::now();
   const double sigma_zx = accumulate(last_, velocity);
-  // Stress control of the Lees–Edwards boundary: the next step's speed.
-  if (s.is_lees_edwards()) s.lees_edwards.respond(s.world.box, sigma_zx, s.dt);
-  s.interval.work_drive += drive_work;
+  s.interval.work_drive += s.drive->fed_work(s.world, sigma_zx, s.dt);
+  // The drive's answer to the step's stress (under the images' stress control:
+  // the next step's speed).
+  s.drive->respond(s.world, sigma_zx, s.dt);
   s.interval.kinetic_end = total_kinetic_energy();
   if (s.strain >= s.next_row_strain) {
     close_row();
@@ -222,24 +183,16 @@ const StepReport& ShearCell::step() {
   return last_;
 }
 
-MeanShearFlow ShearCell::mean_flow() const {
-  const ShearCellState& s = state_;
-  const double lz = config_.cell()->size[2];
-  if (s.is_lees_edwards()) return {.shear_rate = s.world.box.shear_velocity / lz, .z0 = 0.5 * lz};
-  return {.shear_rate = s.walls.top().velocity / s.geometry.gap_height,
-          .z0 = s.geometry.wall_radius_mean};
-}
-
 double ShearCell::accumulate(const StepReport& report, double velocity) {
   ShearCellState& s = state_;
   const CellConfig& cell = *config_.cell();
   const std::vector<Contact>& contacts = stepper_.contacts();
   const double dt = s.dt, area = cell.size[0] * cell.size[1];
   const bool steady = s.strain > config_.run.transient_strain;
-  const ContactCounts n = count_contacts(s.walls.body_groups(), contacts, dt,
-                                         config_.friction.s_lim, steady ? &s.histogram : nullptr);
-  const bool le = s.is_lees_edwards();
-  const WallForces f = le ? WallForces{} : wall_forces(s.walls.body_groups(), contacts, dt);
+  const Drive& drive = *s.drive;
+  const ContactCounts n = count_contacts(drive.body_groups(), contacts, dt, config_.friction.s_lim,
+                                         steady ? &s.histogram : nullptr);
+  const WallForces f = drive.wall_forces(contacts, dt);
   IntervalSums& a = s.interval;
   a.time += dt;
   a.velocity += velocity * dt;
@@ -252,7 +205,6 @@ double ShearCell::accumulate(const StepReport& report, double velocity) {
   a.over_s_lim += n.over_s_lim * dt;
   a.impulsive += n.impulsive * dt;
   a.impulsive_boundary += n.impulsive_boundary * dt;
-  if (!le) a.normal_stress += 0.5 * (f.top[2] - f.bottom[2]) / area * dt;
   a.bottom_force_x += f.bottom[0] * dt;
   a.top_force_z += f.top[2] * dt;
   a.bottom_force_z += f.bottom[2] * dt;
@@ -291,20 +243,16 @@ double ShearCell::accumulate(const StepReport& report, double velocity) {
   // Lz (measure/particle_stress.hpp: there its sigma_zx averages to tau), or
   // over the Lees–Edwards box; the mean flow is the one the drag also uses.
   const Tensor3 virial = contact_impulse_moment(contacts);
-  const Tensor3 kinetic = velocity_fluctuation_moment(s.world.bodies, mean_flow());
+  const Tensor3 kinetic = velocity_fluctuation_moment(s.world.bodies, drive.mean_flow(s.world));
   const double volume = area * cell.size[2];
   Tensor3 sigma;
   for (std::size_t k = 0; k < virial.size(); ++k) {
     a.stress_dt[k] -= (virial[k] + kinetic[k] * dt) / volume;
     sigma[k] = -(virial[k] + kinetic[k] * dt) / (volume * dt);
   }
-  if (le) {
-    // No walls: the normal stress is the bulk's, -sigma_zz, and the power fed
-    // in is the images' work on the box, A V sigma_zx (lees_edwards.hpp).
-    a.normal_stress -= sigma[tensor_index(kZ, kZ)] * dt;
-    a.work_drive += area * velocity * sigma[tensor_index(kZ, kX)] * dt;
-  }
-  if (steady) s.profile.add(s.world, s.walls.body_groups(), dt);
+  // On the walls, or without them the bulk's (Drive::normal_stress).
+  a.normal_stress += drive.normal_stress(s.world, f, sigma[tensor_index(kZ, kZ)]) * dt;
+  if (steady) s.profile.add(s.world, drive.body_groups(), dt);
   return sigma[tensor_index(kZ, kX)];
 }
 
@@ -312,14 +260,8 @@ double ShearCell::accumulate(const StepReport& report, double velocity) {
 // of the state that ends it.
 void ShearCell::close_row() {
   ShearCellState& s = state_;
-  const double lz = config_.cell()->size[2];
   s.rows.push_back(s.interval.close(s.world.time, s.strain));
-  // Under Lees–Edwards the flow is homogeneous and its fraction exact, the
-  // box's (a slab would cut spheres at the periodic boundary).
-  s.rows.back().phi_bulk =
-      s.is_lees_edwards()
-          ? s.geometry.phi_box
-          : slab_volume_fraction(s.world, s.walls.body_groups(), 0.25 * lz, 0.75 * lz);
+  s.rows.back().phi_bulk = bulk_fraction(s);
   s.interval = IntervalSums{};
 }
 

@@ -95,12 +95,9 @@ class ShearCell {
   static constexpr double kCollapsedStep = 1e-6;
   StepChoice choose_dt() const;
   double total_kinetic_energy() const;
-  // The step's measurements with the boundary speed it ran at; returns its
-  // particle shear stress sigma_zx (the Lees–Edwards boundary responds to it).
+  // The step's measurements with the drive's speed it ran at; returns its
+  // particle shear stress sigma_zx (the drive responds to it).
   double accumulate(const StepReport& report, double velocity);
-  // The mean flow the drag and the kinetic stress subtract: the no-slip
-  // profile between the walls, or the box's homogeneous shear about Lz/2.
-  MeanShearFlow mean_flow() const;
   void close_row();
 
   Config config_;

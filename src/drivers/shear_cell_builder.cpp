@@ -134,7 +134,7 @@ World build_shear_cell(const Config& config, ShearCellGeometry& geometry, RoughW
     wall_mass += config.density * sphere_volume(world.bodies.radius[i]);
   }
   wall.mass = cell.wall_mass > 0.0 ? cell.wall_mass : wall_mass;
-  wall.drive_force = cell.shear_stress * lx * ly;
+  wall.drive_force = WallDrive::drive_force(drive_spec(config));
   // Start sheared: a linear profile has uniform stress, so the flow only has to
   // adjust its magnitude, which the whole gap does at once, instead of waiting
   // for momentum to diffuse from a wall that starts alone (several strain units
@@ -146,6 +146,30 @@ World build_shear_cell(const Config& config, ShearCellGeometry& geometry, RoughW
     world.bodies.velocity[i] = Vec3(cell.initial_shear_rate * world.bodies.position[i][2], 0, 0);
   }
   walls = RoughWalls(std::move(group), std::move(wall), CoulombLaw{});
+  return world;
+}
+
+DriveSpec drive_spec(const Config& config) {
+  const CellConfig& cell = *config.cell();
+  const bool images = cell.boundary == CellBoundary::LeesEdwards;
+  return {.kind = images ? DriveKind::Images : DriveKind::Walls,
+          .rate_controlled = cell.control == ShearControl::Rate,
+          .shear_stress = cell.shear_stress,
+          .shear_rate = cell.shear_rate,
+          .mass = images ? cell.boundary_mass : cell.wall_mass,
+          .size = cell.size};
+}
+
+World build_cell(const Config& config, ShearCellGeometry& geometry, std::unique_ptr<Drive>& drive) {
+  if (drive_spec(config).kind == DriveKind::Images) {
+    ImageControl control;
+    World world = build_lees_edwards_cell(config, geometry, control);
+    drive = std::make_unique<ImageDrive>(control);
+    return world;
+  }
+  RoughWalls walls;
+  World world = build_shear_cell(config, geometry, walls);
+  drive = std::make_unique<WallDrive>(std::move(walls), geometry.wall_gap());
   return world;
 }
 
@@ -166,7 +190,7 @@ double top_wall_mass(const Config& config) {
 }
 
 World build_lees_edwards_cell(const Config& config, ShearCellGeometry& geometry,
-                              LeesEdwards& boundary) {
+                              ImageControl& control) {
   const CellConfig& cell = *config.cell();
   const double lx = cell.size[0], ly = cell.size[1], lz = cell.size[2];
   std::mt19937_64 rng(static_cast<std::uint64_t>(cell.seed));
@@ -183,13 +207,8 @@ World build_lees_edwards_cell(const Config& config, ShearCellGeometry& geometry,
   geometry.wall_radius_mean = 0.0;
 
   const bool rate = cell.control == ShearControl::Rate;
-  LeesEdwardsDrive drive;
-  drive.area = lx * ly;
-  drive.rate_controlled = rate;
-  drive.rate = rate ? cell.shear_rate : 0.0;
-  drive.drive_force = cell.shear_stress * drive.area;
-  drive.mass = cell.boundary_mass > 0.0 ? cell.boundary_mass : top_wall_mass(config);
-  boundary = LeesEdwards(drive);
+  control = ImageDrive::control_for(
+      drive_spec(config), cell.boundary_mass > 0.0 ? cell.boundary_mass : top_wall_mass(config));
   // Start on the homogeneous profile, centred so that the box's momentum is
   // zero: u_x = gamma_dot (z - Lz/2), the images above at V = gamma_dot Lz
   // (under stress control gamma_dot = cell.initial_shear_rate, as the wall

@@ -27,9 +27,9 @@ void ShearCell::write_snapshot(const std::filesystem::path& out) {
   const auto particles = fmt::format("snapshots/particles_{:04d}.vtp", k);
   const auto network = fmt::format("snapshots/contacts_{:04d}.vtp", k);
   std::vector<std::uint8_t> groups;
-  // Under Lees–Edwards every body is a particle (the groups are empty: zeros),
+  // Without walls every body is a particle (the groups are empty: zeros),
   // drawn at its wrapped position in the box.
-  for (BodyGroup g : s.walls.groups()) groups.push_back(static_cast<std::uint8_t>(g));
+  for (BodyGroup g : s.drive->body_groups()) groups.push_back(static_cast<std::uint8_t>(g));
   write_particles_vtp(out / particles, s.world, groups);
   write_contacts_vtp(out / network, s.world, stepper_.contacts(), s.dt);
   s.snapshot_strains.push_back(s.strain);
@@ -63,7 +63,7 @@ std::string ShearCell::progress_line(double elapsed) const {
   const ShearCellState& s = state_;
   // The wall speed over the current output interval, else the last row's.
   const double v = s.interval.time > 0.0 ? s.interval.velocity / s.interval.time
-                   : s.rows.empty()      ? s.boundary_velocity()
+                   : s.rows.empty()      ? s.drive_speed()
                                          : s.rows.back().wall_velocity;
   const double gdot = shear_rate(v, config_.cell()->size[2]);
   const double done = s.strain / config_.run.strain;

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "boundary/drive_record.hpp"
 #include "io/atomic_file.hpp"
 #include "io/binary_archive.hpp"
 
@@ -21,9 +22,11 @@ namespace {
 // 2: contact memory with regime)
 constexpr std::uint64_t kMagic = 0x37544e54414c4944ULL;
 
-// One function serves both directions so the field order cannot diverge.
+// One function serves both directions so the field order cannot diverge. The
+// drive is written as its record (boundary/drive_record.hpp), whose fields
+// keep their places in the format.
 template <class Archive, class State>
-void visit_state(Archive& a, State& s) {
+void visit_state(Archive& a, State& s, DriveRecord& d) {
   auto& b = s.world.bodies;
   a.vector(b.position);
   a.vector(b.velocity);
@@ -32,7 +35,7 @@ void visit_state(Archive& a, State& s) {
   a.vector(b.inv_mass);
   a.vector(b.inv_inertia);
   a.vector(b.id);
-  a.vector(s.walls.groups());
+  a.vector(d.groups);
   std::uint64_t planes = s.world.planes.size();
   a.count(planes, 2 * sizeof(Vec3));
   s.world.planes.resize(planes);
@@ -47,17 +50,15 @@ void visit_state(Archive& a, State& s) {
   a.value(s.world.box.shear_velocity);
   a.value(s.world.gravity);
   a.value(s.world.time);
-  auto& wall = s.walls.top();
-  a.vector(wall.spheres);
-  a.value(wall.mass);
-  a.value(wall.drive_force);
-  a.value(wall.velocity);
-  auto& drive = s.lees_edwards.drive();
-  a.value(drive.mass);
-  a.value(drive.drive_force);
-  a.value(drive.area);
-  a.value(drive.rate);
-  a.value(drive.rate_controlled);
+  a.vector(d.wall.spheres);
+  a.value(d.wall.mass);
+  a.value(d.wall.drive_force);
+  a.value(d.wall.velocity);
+  a.value(d.images.mass);
+  a.value(d.images.drive_force);
+  a.value(d.images.area);
+  a.value(d.images.rate);
+  a.value(d.images.rate_controlled);
   a.value(s.geometry);
   a.value(s.dt);
   a.value(s.steps);
@@ -83,7 +84,8 @@ void save_checkpoint(const std::filesystem::path& file, const ShearCellState& st
   BinaryWriter w;
   w.value(kMagic);
   // visit_state needs mutable access for the reader; the writer only reads.
-  visit_state(w, const_cast<ShearCellState&>(state));
+  DriveRecord drive = state.drive->record();
+  visit_state(w, const_cast<ShearCellState&>(state), drive);
   // Contact memory (warm-start impulses and regimes), sorted by key so the file
   // is reproducible.
   std::vector<std::pair<std::uint64_t, ContactMemory>> memory(state.contact_memory.begin(),
@@ -122,7 +124,8 @@ namespace {
 // A state that read without error can still be one no run wrote (a damaged
 // file of the right length): arrays of different lengths or indices out of
 // range would be read out of bounds by the first step. Refused here, named.
-void check_consistent(const ShearCellState& s, const std::filesystem::path& file) {
+void check_consistent(const ShearCellState& s, const DriveRecord& drive,
+                      const std::filesystem::path& file) {
   const Bodies& b = s.world.bodies;
   const std::size_t n = b.position.size();
   const auto fail = [&](const char* what) {
@@ -131,13 +134,7 @@ void check_consistent(const ShearCellState& s, const std::filesystem::path& file
   if (b.velocity.size() != n || b.angular_velocity.size() != n || b.radius.size() != n ||
       b.inv_mass.size() != n || b.inv_inertia.size() != n || b.id.size() != n)
     fail("body arrays of different lengths");
-  if (!s.walls.groups().empty() && s.walls.groups().size() != n) fail("body groups");
-  for (const std::int32_t i : s.walls.top().spheres)
-    if (i < 0 || static_cast<std::size_t>(i) >= n) fail("wall sphere index");
-  if (s.is_lees_edwards()
-          ? !s.lees_edwards.drive().rate_controlled && !(s.lees_edwards.drive().mass > 0.0)
-          : !s.walls.top().spheres.empty() && !(s.walls.top().mass > 0.0))
-    fail("boundary mass");
+  if (const char* fault = drive.fault(s.world.box, n)) fail(fault);
   if (s.geometry.first_mobile > n || s.geometry.mobile_count > n - s.geometry.first_mobile)
     fail("mobile range");
   for (int k = 0; k < 3; ++k)
@@ -161,7 +158,8 @@ ShearCellState read_checkpoint(std::string bytes, const std::filesystem::path& f
         file.string(), static_cast<char>(magic >> 56), static_cast<char>(kMagic >> 56)));
   if (magic != kMagic) throw std::runtime_error(file.string() + ": not a dilatant checkpoint");
   ShearCellState s;
-  visit_state(r, s);
+  DriveRecord drive;
+  visit_state(r, s, drive);
   std::uint64_t n = 0;
   r.value(n);
   for (std::uint64_t k = 0; k < n; ++k) {
@@ -178,7 +176,8 @@ ShearCellState read_checkpoint(std::string bytes, const std::filesystem::path& f
     s.contact_memory.emplace(key, m);
   }
   if (!r.at_end()) throw std::runtime_error(file.string() + ": checkpoint has trailing data");
-  check_consistent(s, file);
+  check_consistent(s, drive, file);
+  s.drive = restore_drive(std::move(drive), s.world.box, s.geometry.wall_gap());
   return s;
 }
 

@@ -3,12 +3,12 @@
 // state written byte for byte, so a resumed run continues exactly where the
 // interrupted one stopped (same floating-point results).
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
-#include "boundary/lees_edwards.hpp"
-#include "boundary/rough_walls.hpp"
+#include "boundary/drive.hpp"
 #include "detection/contact.hpp"
 #include "drivers/shear_cell_builder.hpp"
 #include "measure/contact_statistics.hpp"
@@ -20,11 +20,10 @@ namespace dilatant {
 
 struct ShearCellState {
   World world;
-  // The cell's boundary: rough walls, or (world.box.lees_edwards) Lees–Edwards
-  // images, whose speed V is world.box.shear_velocity. The other one is empty
-  // (walls without bodies, a Lees–Edwards drive of zeros).
-  RoughWalls walls;  // their contact law is a run setting, not part of the state
-  LeesEdwards lees_edwards;
+  // What shears the cell (boundary/drive.hpp): its rough walls or its
+  // Lees–Edwards images. Never null in a cell; the walls' contact law is a run
+  // setting, not part of the state.
+  std::unique_ptr<Drive> drive;
   ShearCellGeometry geometry;
   double dt = 0.0;
   std::unordered_map<std::uint64_t, ContactMemory> contact_memory;
@@ -44,12 +43,8 @@ struct ShearCellState {
   double jam_window_time = 0.0;
   bool jammed = false;
 
-  bool is_lees_edwards() const { return world.box.lees_edwards; }
-  Boundary& boundary() { return is_lees_edwards() ? static_cast<Boundary&>(lees_edwards) : walls; }
   // The speed that sets the shear: the top wall's, or the images' above.
-  double boundary_velocity() const {
-    return is_lees_edwards() ? world.box.shear_velocity : walls.top().velocity;
-  }
+  double drive_speed() const { return drive->speed(world); }
 };
 
 // Writes the state atomically; reads it back (throws on a corrupt file).

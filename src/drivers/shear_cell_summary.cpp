@@ -55,6 +55,13 @@ void add_stress(nlohmann::json& j, const std::vector<FlowRow>& rows, double from
 
 }  // namespace
 
+double bulk_fraction(const ShearCellState& s) {
+  const BulkRegion region = s.drive->bulk_region(s.world);
+  return region.whole_box
+             ? s.geometry.phi_box
+             : slab_volume_fraction(s.world, s.drive->body_groups(), region.z_lo, region.z_hi);
+}
+
 nlohmann::json cell_summary(const Config& config, const CellUnits& u, const ShearCellState& s,
                             const RunCost& cost) {
   const CellConfig& cell = *config.cell();
@@ -108,12 +115,14 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   }
 
   const double gdot_code = rheology.shear_rate;
-  const bool le = s.is_lees_edwards();
-  // Bulk shear rate: slope of the profile over the central half of the gap.
-  // The Lees–Edwards box is all bulk (no wall layers to leave out): its slope
-  // and deviation are over the whole height, every bin of the profile.
-  const LinearFit bulk = le ? s.profile.fit(0.0, lz) : s.profile.fit(0.25 * lz, 0.75 * lz);
-  const LinearFit whole = le ? bulk : s.profile.fit(2.0, lz - 2.0);
+  const Drive& drive = *s.drive;
+  const bool walls = drive.bounded_by_walls();
+  // Bulk shear rate: slope of the profile over the drive's bulk region (the
+  // central half of the gap; the whole Lees–Edwards box, which has no wall
+  // layers to leave out); its deviation from a line over the whole flow.
+  const BulkRegion region = drive.bulk_region(s.world);
+  const LinearFit bulk = s.profile.fit(region.z_lo, region.z_hi);
+  const LinearFit whole = s.profile.fit(region.flow_lo, region.flow_hi);
   const double rel_err = rheology.relative_error;
   // Without slip the profile is linear between the walls' mean surfaces, so the
   // bulk rate expected is V / (Lz - 2 r_w), not the paper's V / Lz (7% lower in
@@ -138,16 +147,19 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   // The boundary (docs/shear-cell.md "The Lees–Edwards cell"): without walls
   // the wall-only fields below are null, and wall_velocity is the images'
   // speed V = gamma_dot Lz.
-  j["boundary"] = le ? "lees-edwards" : "walls";
+  j["boundary"] = drive.name();
   const bool rate = cell.control == ShearControl::Rate;
   j["control"] = rate ? "rate" : "stress";
   // cell.phi counts as cell.phi_definition says; both counts are reported
-  // (Lees–Edwards: the box, exactly).
-  const bool box = le || cell.phi_definition == PhiDefinition::Box;
+  // (without walls: the box, exactly).
+  const bool box = !walls || cell.phi_definition == PhiDefinition::Box;
   j["phi"] = box ? s.geometry.phi_box : s.geometry.phi;
   j["phi_requested"] = cell.phi;
   j["phi_definition"] = box ? "box" : "between-walls";
-  j["phi_between_walls"] = le ? nlohmann::json(nullptr) : nlohmann::json(s.geometry.phi);
+  const auto wall_only = [walls](double x) {
+    return walls ? nlohmann::json(x) : nlohmann::json(nullptr);
+  };
+  j["phi_between_walls"] = wall_only(s.geometry.phi);
   j["phi_box"] = s.geometry.phi_box;
   if (phi_bulk.samples > 0) {
     j["phi_bulk"] = phi_bulk.mean;  // central half of the gap, steady-state average
@@ -155,14 +167,11 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   } else {
     // No row after the transient (a jam stops the wall before it): the packing
     // the run ends in still has a bulk fraction, from its final state.
-    // (Lees–Edwards: the box's exact fraction, as every row has.)
-    j["phi_bulk"] = le ? s.geometry.phi_box
-                       : slab_volume_fraction(s.world, s.walls.body_groups(), 0.25 * lz, 0.75 * lz);
+    j["phi_bulk"] = bulk_fraction(s);
     j["phi_bulk_err"] = nullptr;
   }
   j["mobile_spheres"] = s.geometry.mobile_count;
-  j["wall_radius_mean"] =
-      le ? nlohmann::json(nullptr) : nlohmann::json(s.geometry.wall_radius_mean);
+  j["wall_radius_mean"] = wall_only(s.geometry.wall_radius_mean);
   j["shear_stress"] = cell.shear_stress / u.stress_unit;
   j["jammed"] = s.jammed;
   if (s.jammed) {
@@ -220,9 +229,6 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   j["wall_velocity_drift"] = drift.change;  // second half of the window minus first, relative
   j["wall_velocity_drift_err"] = drift.error;
   j["valid"] = !s.jammed && (!lubricated || over.mean <= 0.05) && profile_consistent && !drifting;
-  const auto wall_only = [le](double x) {
-    return le ? nlohmann::json(nullptr) : nlohmann::json(x);
-  };
   j["bottom_wall_force_x"] = wall_only(fx.mean);
   j["bottom_wall_force_x_err"] = wall_only(fx.error);
   j["top_wall_force_z"] = wall_only(fz_top.mean);  // push of the particles on the top wall

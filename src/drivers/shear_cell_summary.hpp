@@ -9,6 +9,10 @@
 
 namespace dilatant {
 
+// The volume fraction of the drive's bulk region in the state as it is
+// (Drive::bulk_region): phi_bulk of a time-series row, or of a run without one.
+double bulk_fraction(const ShearCellState& state);
+
 nlohmann::json cell_summary(const Config& config, const CellUnits& units,
                             const ShearCellState& state, const RunCost& cost);
 

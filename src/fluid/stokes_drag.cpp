@@ -4,7 +4,7 @@
 
 namespace dilatant {
 
-void StokesDrag::assign(const World& world, const AmbientShear& flow, BodyDrag& drag) const {
+void StokesDrag::assign(const World& world, const ShearFlow& flow, BodyDrag& drag) const {
   const Bodies& b = world.bodies;
   const std::size_t n = b.size();
   constexpr double pi = std::numbers::pi;

@@ -15,20 +15,16 @@
 // the mean-field picture of Trulsson, Andreotti & Claudin (2012, PRL 109, 118305).
 // Taken implicitly through the body's effective mass (fluid/fluid_forces.hpp).
 #include "fluid/fluid_forces.hpp"
+#include "world/shear_flow.hpp"
 
 namespace dilatant {
-
-struct AmbientShear {
-  double shear_rate = 0.0;  // gamma_dot
-  double z0 = 0.0;          // height where the fluid is at rest
-};
 
 struct StokesDrag {
   double eta_f = 0.0;
 
   // Fills `drag` for every body of `world` (fixed bodies get coefficients too;
   // the implicit update leaves them alone).
-  void assign(const World& world, const AmbientShear& flow, BodyDrag& drag) const;
+  void assign(const World& world, const ShearFlow& flow, BodyDrag& drag) const;
 };
 
 }  // namespace dilatant

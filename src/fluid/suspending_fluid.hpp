@@ -18,8 +18,8 @@ class SuspendingFluid final : public FluidForces {
 
   bool empty() const { return !drag_ && !film_; }
   // The ambient flow the drag is taken relative to (default: at rest).
-  void set_ambient(const AmbientShear& flow) { flow_ = flow; }
-  const AmbientShear& ambient() const { return flow_; }
+  void set_ambient(const ShearFlow& flow) { flow_ = flow; }
+  const ShearFlow& ambient() const { return flow_; }
 
   void body_drag(const World& world, BodyDrag& drag) const override;
   double pair_range(const World& world) const override;
@@ -28,7 +28,7 @@ class SuspendingFluid final : public FluidForces {
  private:
   std::optional<StokesDrag> drag_;
   std::optional<SqueezeFilm> film_;
-  AmbientShear flow_;
+  ShearFlow flow_;
 };
 
 }  // namespace dilatant

@@ -14,7 +14,7 @@ Tensor3 contact_impulse_moment(const std::vector<Contact>& contacts) {
   return m;
 }
 
-Tensor3 velocity_fluctuation_moment(const Bodies& bodies, MeanShearFlow flow) {
+Tensor3 velocity_fluctuation_moment(const Bodies& bodies, ShearFlow flow) {
   Tensor3 m{};
   for (std::size_t n = 0; n < bodies.size(); ++n) {
     if (bodies.is_fixed(n)) continue;

@@ -37,6 +37,7 @@
 
 #include "detection/contact.hpp"
 #include "world/bodies.hpp"
+#include "world/shear_flow.hpp"
 
 namespace dilatant {
 
@@ -53,15 +54,9 @@ inline constexpr int tensor_index(int a, int b) { return 3 * a + b; }
 // for a plane), so periodic images need no care.
 Tensor3 contact_impulse_moment(const std::vector<Contact>& contacts);
 
-// The mean flow the kinetic part subtracts: u_x = shear_rate (z - z0).
-struct MeanShearFlow {
-  double shear_rate = 0.0;
-  double z0 = 0.0;
-};
-
 // sum_n m_n v'_n (x) v'_n over the bodies with mass (fixed bodies, e.g. the
-// walls' spheres, have none), v' = v - u(z).
-Tensor3 velocity_fluctuation_moment(const Bodies& bodies, MeanShearFlow flow);
+// walls' spheres, have none), v' = v - u(z), u the mean flow (world/shear_flow.hpp).
+Tensor3 velocity_fluctuation_moment(const Bodies& bodies, ShearFlow flow);
 
 // The invariants rheologists report (x flow, y vorticity, z gradient).
 struct StressInvariants {

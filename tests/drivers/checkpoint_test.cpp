@@ -37,7 +37,7 @@ TEST(Checkpoint, ReadsBackTheStateItWrote) {
   const ShearCellState s = load_checkpoint(file);
   EXPECT_EQ(s.steps, 1);
   EXPECT_GT(s.world.bodies.size(), 0u);
-  EXPECT_EQ(s.walls.groups().size(), s.world.bodies.size());
+  EXPECT_EQ(s.drive->body_groups().size(), s.world.bodies.size());
   std::filesystem::remove(file);
 }
 

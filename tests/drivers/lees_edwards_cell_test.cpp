@@ -1,5 +1,5 @@
 // The wall-free shear cell (cell.boundary = "lees-edwards";
-// boundary/lees_edwards.hpp): its construction, its two controls, momentum
+// boundary/image_drive.hpp): its construction, its two controls, momentum
 // across the sheared boundary, and fluid forces through it. The steady flow's
 // physics is in lees_edwards_flow_test.cpp.
 #include <gtest/gtest.h>
@@ -39,8 +39,8 @@ double sphere_volume(double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r
 TEST(LeesEdwardsCell, IsATriplyPeriodicBoxOfMobileSpheresAtTheExactFraction) {
   const Config config = le_cell();
   ShearCellGeometry g;
-  LeesEdwards boundary;
-  const World w = build_lees_edwards_cell(config, g, boundary);
+  ImageControl control;
+  const World w = build_lees_edwards_cell(config, g, control);
   const CellConfig& cell = *config.cell();
   EXPECT_TRUE(w.box.lees_edwards);
   EXPECT_EQ(w.box.periodic, (std::array<bool, 3>{true, true, true}));
@@ -68,27 +68,8 @@ TEST(LeesEdwardsCell, IsATriplyPeriodicBoxOfMobileSpheresAtTheExactFraction) {
   ShearCellGeometry wg;
   RoughWalls walls;
   build_shear_cell(default_cell_config({"cell.size=[6.0, 5.0, 7.0]"}), wg, walls);
-  EXPECT_EQ(boundary.drive().mass, walls.top().mass);
-  EXPECT_DOUBLE_EQ(boundary.drive().drive_force, cell.shear_stress * cell.size[0] * cell.size[1]);
-}
-
-// Stress control is the wall's equation of motion with the bulk stress for the
-// contacts' force per area (lees_edwards.hpp); rate control keeps V.
-TEST(LeesEdwardsCell, TheBoundaryRespondsToTheMeasuredStress) {
-  PeriodicBox box;
-  box.length = Vec3(4.0, 5.0, 6.0);
-  box.shear_velocity = 0.7;
-  const LeesEdwards stress({.mass = 2.0, .drive_force = 3.0, .area = 20.0});
-  stress.respond(box, 0.1, 0.01);
-  EXPECT_DOUBLE_EQ(box.shear_velocity, 0.7 + 0.01 * (3.0 - 20.0 * 0.1) / 2.0);
-  const double v = box.shear_velocity;
-  stress.respond(box, 3.0 / 20.0, 0.01);  // the stress the drive applies: no change
-  EXPECT_DOUBLE_EQ(box.shear_velocity, v);
-  const LeesEdwards rate({.area = 20.0, .rate = 0.25, .rate_controlled = true});
-  rate.respond(box, 5.0, 0.01);
-  EXPECT_EQ(box.shear_velocity, 0.25 * 6.0);
-  EXPECT_EQ(rate.drive_acceleration(), 0.0);
-  EXPECT_DOUBLE_EQ(stress.drive_acceleration(), 1.5);
+  EXPECT_EQ(control.mass, walls.top().mass);
+  EXPECT_DOUBLE_EQ(control.drive_force, cell.shear_stress * cell.size[0] * cell.size[1]);
 }
 
 // Rate control: the images move at gamma_dot Lz at every step, so the strain
@@ -308,8 +289,8 @@ TEST(LeesEdwardsCell, TwoThreadsGiveTheSameBitsAsOne) {
   const std::string size = "cell.size=[6.0, 5.0, 11.0]";
   {
     ShearCellGeometry g;
-    LeesEdwards boundary;
-    const World world = build_lees_edwards_cell(le_cell({size}), g, boundary);
+    ImageControl control;
+    const World world = build_lees_edwards_cell(le_cell({size}), g, control);
     std::vector<Contact> contacts, scratch;
     ContactDetector().detect(world, 0.1, contacts);
     ASSERT_GE(partition_into_slabs(contacts, world, {}, scratch).count(), 4);

@@ -1,5 +1,5 @@
 // Steady flow of the wall-free cell (cell.boundary = "lees-edwards";
-// boundary/lees_edwards.hpp) on the small cell of the wall cell's physics
+// boundary/image_drive.hpp) on the small cell of the wall cell's physics
 // suite (8 x 5 x 9 R, lambda = 1, the literal model; shear_cell_physics_test.cpp),
 // under stress control. Tolerances are the run's own block errors at 3 sigma
 // (measure/flow_series.hpp), bounded so that a noisy run cannot pass more
@@ -112,7 +112,7 @@ TEST_F(LeesEdwardsSteadyShear, VelocityProfileIsLinearOverTheWholeBox) {
 }
 
 // Energy without walls: the images feed in A V sigma_zx (the measured particle
-// stress; lees_edwards.hpp), and the contacts dissipate it in impacts and
+// stress; image_drive.hpp), and the contacts dissipate it in impacts and
 // friction. Unlike the wall cell's (exact step by step), this balance holds on
 // average only: A V sigma_zx dt is the stress's work, while the contacts'
 // impulses act on velocities that fluctuate about the mean profile. So:

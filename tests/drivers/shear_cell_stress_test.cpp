@@ -16,9 +16,9 @@
 
 #include <cmath>
 
+#include "boundary/wall_drive.hpp"
 #include "drivers/shear_cell.hpp"
 #include "measure/particle_stress.hpp"
-#include "measure/wall_forces.hpp"
 
 namespace dilatant::shear_cell_stress_test {
 namespace {
@@ -47,7 +47,7 @@ TEST(ParticleStress, TheWallCellsVirialBalancesTheDriveStepByStep) {
   for (int k = 0; k < 200; ++k) cell.step();
 
   const double lz = config.cell()->size[2];
-  const SlidingWall& wall = cell.state().walls.top();
+  const SlidingWall& wall = dynamic_cast<const WallDrive&>(*cell.state().drive).walls().top();
   const Moments start = momentum_moments(cell.state().world.bodies);
   const double wall_start = wall.mass * wall.velocity;
   double virial_zx = 0.0, virial_zz = 0.0, top_impulse_z = 0.0, time = 0.0, scale = 0.0;
@@ -58,8 +58,7 @@ TEST(ParticleStress, TheWallCellsVirialBalancesTheDriveStepByStep) {
     const Tensor3 kinetic = velocity_fluctuation_moment(cell.state().world.bodies, {});
     virial_zx += v[tensor_index(kZ, kX)] + dt * kinetic[tensor_index(kZ, kX)];
     virial_zz += v[tensor_index(kZ, kZ)] + dt * kinetic[tensor_index(kZ, kZ)];
-    top_impulse_z +=
-        wall_forces(cell.state().walls.body_groups(), cell.contacts(), dt).top[kZ] * dt;
+    top_impulse_z += cell.state().drive->wall_forces(cell.contacts(), dt).top[kZ] * dt;
     scale += std::abs(v[tensor_index(kZ, kZ)]);
     time += dt;
   }

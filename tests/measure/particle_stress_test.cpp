@@ -54,7 +54,7 @@ TEST(ParticleStress, FrictionAlongXOfABranchAlongZIsTheZxEntry) {
 // bodies (the walls' spheres) count nothing.
 TEST(ParticleStress, TheKineticPartCountsOnlyTheFluctuationOfMobileBodies) {
   Bodies b;
-  const MeanShearFlow flow{.shear_rate = 2.0, .z0 = 1.0};
+  const ShearFlow flow{.shear_rate = 2.0, .z0 = 1.0};
   b.add_sphere(0, Vec3(0.0, 0.0, 3.0), 1.0, 1.0, false, Vec3(4.0, 0.0, 0.0));  // on the flow
   b.add_sphere(1, Vec3(0.0, 0.0, 1.0), 1.0, 1.0, false, Vec3(1.0, 0.0, 2.0));
   b.add_sphere(2, Vec3(0.0, 0.0, 5.0), 1.0, 1.0, true, Vec3(9.0, 9.0, 9.0));

@@ -1,6 +1,6 @@
-// Forces of the contacts on the shear cell's walls (measure/wall_forces.hpp):
+// Forces of the contacts on the shear cell's walls (boundary/wall_forces.hpp):
 // impulse over dt, with Newton's third law fixing the sign.
-#include "measure/wall_forces.hpp"
+#include "boundary/wall_forces.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "measure/wall_forces.hpp"
+#include "boundary/wall_forces.hpp"
 
 namespace dilatant {
 
