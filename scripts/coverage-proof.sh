@@ -5,7 +5,7 @@
 # the lines of src/ that the left-out tests run, against those that the tests
 # left in the stage run. Exit 0 if the left-out tests run no line of src/ that
 # the others do not; otherwise the lines, and exit 1. Not part of CI (a
-# coverage build and two runs of the suite, about 20 minutes on 2 cores): run
+# coverage build and two runs of the suite, 35 minutes on 2 idle cores): run
 # it when a list changes, or when a listed test starts to run new code.
 # docs/testing.md, "Fourth round".
 #   scripts/coverage-proof.sh [sanitize|tsan]   (default: both)
