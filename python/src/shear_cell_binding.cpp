@@ -66,7 +66,8 @@ long advance(ShearCell& cell, std::optional<double> strain, std::optional<long> 
 
 std::string timeseries_csv(const ShearCell& cell) {
   std::string csv = flow_csv_header();
-  for (const FlowRow& r : cell.state().rows) csv += flow_csv_row(r, cell.config().cell()->size[2]);
+  for (const FlowRow& r : cell.state().measurements.rows)
+    csv += flow_csv_row(r, cell.config().cell()->size[2]);
   return csv;
 }
 
@@ -119,7 +120,7 @@ void bind_shear_cell(py::module_& m) {
       .def_property_readonly("time", [](const ShearCell& c) { return c.state().world.time; })
       .def_property_readonly("steps", [](const ShearCell& c) { return c.state().steps; })
       .def_property_readonly("dt", [](const ShearCell& c) { return c.state().dt; })
-      .def_property_readonly("jammed", [](const ShearCell& c) { return c.state().jammed; })
+      .def_property_readonly("jammed", [](const ShearCell& c) { return c.state().jam.jammed; })
       .def_property_readonly("wall_velocity",
                              [](const ShearCell& c) { return c.state().drive_speed(); })
       .def_property_readonly("config", &ShearCell::config)
@@ -151,9 +152,12 @@ void bind_shear_cell(py::module_& m) {
              return contacts_csv(c.state().world.bodies, c.contacts(), c.state().dt);
            })
       .def("timeseries_csv", &timeseries_csv)
-      .def("velocity_profile_csv", [](const ShearCell& c) { return c.state().profile.csv(); })
+      .def("velocity_profile_csv",
+           [](const ShearCell& c) { return c.state().measurements.profile.csv(); })
       .def("sommerfeld_hist_csv",
-           [](const ShearCell& c) { return sommerfeld_histogram_csv(c.state().histogram); })
+           [](const ShearCell& c) {
+             return sommerfeld_histogram_csv(c.state().measurements.histogram);
+           })
       .def("write_checkpoint", &ShearCell::write_checkpoint, py::arg("file"))
       .def("write_snapshot", &ShearCell::write_snapshot, py::arg("out"))
       .def("write_series", &ShearCell::write_series, py::arg("out"))

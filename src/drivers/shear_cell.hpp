@@ -13,6 +13,7 @@
 // summary reports the paper's units.
 #include <filesystem>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -40,25 +41,25 @@ class ShearCell {
 
   // One time step and its measurements.
   const StepReport& step();
-  // run.strain reached, or jammed: the wall advanced less than kJamStrain
-  // within kJamWindow time units (code units R sqrt(rho_p/tau); a Newtonian
-  // flow at lambda = 0.01 still shears ~1e-2 in that time).
-  bool done() const { return state_.strain >= config_.run.strain || state_.jammed; }
+  // run.strain reached, or jammed (measure/jam_watch.hpp).
+  bool done() const { return state_.strain >= config_.run.strain || state_.jam.jammed; }
   double fraction_done() const;
   // Closes the time series' last, partial interval (at the end of a run).
   void finish();
 
-  // Output schedules (in strain), met by the caller's run loop.
-  bool snapshot_due() const;
-  bool checkpoint_due() const { return state_.strain >= state_.next_checkpoint_strain; }
+  // Output schedules (in strain, drivers/strain_schedule.hpp), met by the
+  // caller's run loop; each writer moves its schedule on.
+  bool snapshot_due() const { return state_.schedules.snapshots.due(state_.strain); }
+  bool checkpoint_due() const { return state_.schedules.checkpoints.due(state_.strain); }
 
   // Writers: every file atomically (write, then rename).
-  void write_checkpoint(const std::filesystem::path& file);       // and moves its schedule on
+  void write_checkpoint(const std::filesystem::path& file);
   void write_snapshot(const std::filesystem::path& out_dir);      // snapshots/*.vtp + cell.pvd
   void write_series(const std::filesystem::path& out_dir) const;  // timeseries.csv
   // The end-of-run files: timeseries.csv, velocity_profile.csv,
-  // sommerfeld_hist.csv, contacts.csv, summary.json.
-  void write_results(const std::filesystem::path& out_dir, const RunCost& cost) const;
+  // sommerfeld_hist.csv, contacts.csv, summary.json; returns the summary it
+  // wrote (a sweep's table is filled from it, not from the file read back).
+  nlohmann::json write_results(const std::filesystem::path& out_dir, const RunCost& cost) const;
 
   // The progress line of a terminal: strain, shear rate, viscosity, time left.
   std::string progress_line(double elapsed_seconds) const;
@@ -75,33 +76,18 @@ class ShearCell {
   // gives (0.02 r)^2 / r = 4e-4 r, unconverged solves more; beyond 1% a run
   // is warned about and its summary says overlap_exceeded.
   static constexpr double kOverlapTolerance = 0.01;
-  static constexpr double kJamWindow = 50.0;
-  static constexpr double kJamStrain = 1e-4;
 
  private:
   ShearCell(Config config, ShearCellState state);
-  // The automatic step, and whether the drive's bound (not the speed of the
-  // fastest body) set it.
-  struct StepChoice {
-    double dt = 0.0;
-    bool by_drive = false;
-    double dt_drive = 0.0;  // the drive's bound alone (0 with a fixed solver.dt)
-    // Fastest push-out of an overlap, c r_min / dt_drive (choose_dt(); none with
-    // a fixed solver.dt, whose step no speed can shorten).
-    double max_push_out = kNoPushOutCap;
-  };
   // A body a million times faster than the drive can make the wall in one step
   // (the automatic step collapsed by that factor): a numerical blow-up.
   static constexpr double kCollapsedStep = 1e-6;
-  StepChoice choose_dt() const;
   double total_kinetic_energy() const;
-  // The step's measurements with the drive's speed it ran at; returns its
-  // particle shear stress sigma_zx (the drive responds to it).
-  double accumulate(const StepReport& report, double velocity);
   void close_row();
 
   Config config_;
   CellUnits units_;
+  MeasurementSettings measurement_settings_;
   ShearCellState state_;
   std::unique_ptr<SuspendingFluid> fluid_;  // null: the literal model
   TimeStepper stepper_;

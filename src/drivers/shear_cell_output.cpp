@@ -16,8 +16,7 @@ namespace dilatant {
 void ShearCell::write_checkpoint(const std::filesystem::path& file) {
   state_.contact_memory = stepper_.contact_memory();
   save_checkpoint(file, state_);
-  while (state_.next_checkpoint_strain <= state_.strain)
-    state_.next_checkpoint_strain += config_.run.checkpoint_interval;
+  state_.schedules.checkpoints.advance_past(state_.strain);
 }
 
 void ShearCell::write_snapshot(const std::filesystem::path& out) {
@@ -40,48 +39,50 @@ void ShearCell::write_snapshot(const std::filesystem::path& out) {
     pvd.add(s.snapshot_strains[n], fmt::format("snapshots/contacts_{:04d}.vtp", n), 1);
   }
   pvd.write();
-  s.next_snapshot_strain += config_.run.snapshot_interval;
+  s.schedules.snapshots.advance();
 }
 
 void ShearCell::write_series(const std::filesystem::path& out) const {
   std::string csv = flow_csv_header();
-  for (const FlowRow& r : state_.rows) csv += flow_csv_row(r, config_.cell()->size[2]);
+  for (const FlowRow& r : state_.measurements.rows) csv += flow_csv_row(r, config_.cell()->size[2]);
   write_file_atomically(out / "timeseries.csv", csv);
 }
 
-void ShearCell::write_results(const std::filesystem::path& out, const RunCost& cost) const {
+nlohmann::json ShearCell::write_results(const std::filesystem::path& out,
+                                        const RunCost& cost) const {
   write_series(out);
-  write_file_atomically(out / "velocity_profile.csv", state_.profile.csv());
-  write_file_atomically(out / "sommerfeld_hist.csv", sommerfeld_histogram_csv(state_.histogram));
+  const CellMeasurements& m = state_.measurements;
+  write_file_atomically(out / "velocity_profile.csv", m.profile.csv());
+  write_file_atomically(out / "sommerfeld_hist.csv", sommerfeld_histogram_csv(m.histogram));
   write_file_atomically(out / "contacts.csv",
                         contacts_csv(state_.world.bodies, stepper_.contacts(), state_.dt));
-  write_file_atomically(out / "summary.json",
-                        cell_summary(config_, units_, state_, cost).dump(2) + "\n");
+  nlohmann::json summary = cell_summary(config_, units_, state_, cost);
+  write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+  return summary;
 }
 
 std::string ShearCell::progress_line(double elapsed) const {
   const ShearCellState& s = state_;
-  // The wall speed over the current output interval, else the last row's.
-  const double v = s.interval.time > 0.0 ? s.interval.velocity / s.interval.time
-                   : s.rows.empty()      ? s.drive_speed()
-                                         : s.rows.back().wall_velocity;
-  const double gdot = shear_rate(v, config_.cell()->size[2]);
+  const std::vector<FlowRow>& rows = s.measurements.rows;
+  // The drive's speed over the current output interval, else the last row's.
+  const double gdot =
+      shear_rate(s.measurements.recent_speed(s.drive_speed()), config_.cell()->size[2]);
   const double done = s.strain / config_.run.strain;
   const double left = done > 0.0 ? elapsed * (1.0 - done) / done : 0.0;
   // Whether the averages can be trusted yet (measure/steadiness.hpp).
   std::string state;
   if (s.strain <= config_.run.transient_strain) {
     state = "transient";
-  } else if (const Drift d = wall_speed_drift(s.rows, config_.run.transient_strain);
+  } else if (const Drift d = wall_speed_drift(rows, config_.run.transient_strain);
              d.known && !d.steady) {
     state = fmt::format("not yet steady: wall speed {:+.0f}% +- {:.0f}%", 100.0 * d.change,
                         100.0 * d.error);
   }
   // The stress: applied, or under rate control the last row's measured one.
   const bool rate = config_.cell()->control == ShearControl::Rate;
-  const double tau = !rate            ? config_.cell()->shear_stress
-                     : s.rows.empty() ? 0.0
-                                      : invariants(s.rows.back().stress).shear;
+  const double tau = !rate          ? config_.cell()->shear_stress
+                     : rows.empty() ? 0.0
+                                    : invariants(rows.back().stress).shear;
   return fmt::format("strain {:6.2f}/{:.2f}  gamma_dot {:9.3g}  eta {:9.3g}  left {:5.0f} s  {}",
                      s.strain, config_.run.strain, gdot / units_.rate_unit,
                      relative_viscosity(tau, gdot, units_.eta_f), left, state);

@@ -4,14 +4,13 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <fstream>
 #include <iostream>
-#include <iterator>
 
 #include "drivers/shear_cell.hpp"
 #include "io/atomic_file.hpp"
 #include "io/config_compare.hpp"
 #include "io/input_error.hpp"
+#include "io/text.hpp"
 #include "measure/run_cost.hpp"
 
 namespace dilatant {
@@ -19,25 +18,25 @@ namespace dilatant {
 namespace {
 
 CellOutcome outcome_of(const ShearCell& cell, bool interrupted) {
+  const ShearCellState& state = cell.state();
+  const SolverRecord solver = SolverRecord::of(state.measurements.rows);
   CellOutcome outcome;
-  outcome.steps = cell.state().steps;
-  for (const FlowRow& r : cell.state().rows) {
-    outcome.unconverged_steps += static_cast<long>(r.unconverged_steps);
-    if (r.max_overlap > outcome.max_overlap && r.max_overlap_step >= 0.0) {
-      outcome.max_overlap = r.max_overlap;
-      outcome.max_overlap_step = static_cast<long>(r.max_overlap_step);
-      outcome.max_overlap_body_i = static_cast<long long>(r.max_overlap_body_i);
-      outcome.max_overlap_body_j = static_cast<long long>(r.max_overlap_body_j);
-    }
-    if (r.contact_residual_max > outcome.contact_residual_max && r.contact_residual_step >= 0.0) {
-      outcome.contact_residual_max = r.contact_residual_max;
-      outcome.contact_residual_step = static_cast<long>(r.contact_residual_step);
-      outcome.contact_residual_body_i = static_cast<long long>(r.contact_residual_body_i);
-      outcome.contact_residual_body_j = static_cast<long long>(r.contact_residual_body_j);
-    }
+  outcome.steps = state.steps;
+  outcome.unconverged_steps = static_cast<long>(solver.unconverged);
+  if (const FlowRow* r = solver.deepest; r != nullptr && r->max_overlap_step >= 0.0) {
+    outcome.max_overlap = r->max_overlap;
+    outcome.max_overlap_step = static_cast<long>(r->max_overlap_step);
+    outcome.max_overlap_body_i = static_cast<long long>(r->max_overlap_body_i);
+    outcome.max_overlap_body_j = static_cast<long long>(r->max_overlap_body_j);
+  }
+  if (const FlowRow* r = solver.worst_residual; r != nullptr) {
+    outcome.contact_residual_max = r->contact_residual_max;
+    outcome.contact_residual_step = static_cast<long>(r->contact_residual_step);
+    outcome.contact_residual_body_i = static_cast<long long>(r->contact_residual_body_i);
+    outcome.contact_residual_body_j = static_cast<long long>(r->contact_residual_body_j);
   }
   outcome.overlap_tolerance = ShearCell::kOverlapTolerance * cell.config().cell()->radius_min;
-  outcome.jammed = cell.state().jammed;
+  outcome.jammed = state.jam.jammed;
   outcome.interrupted = interrupted;
   return outcome;
 }
@@ -64,9 +63,8 @@ ShearCell continued(const Config& config, const std::filesystem::path& start_fro
 ShearCell resumed(const Config& config, const std::filesystem::path& out) {
   const auto written = out / "config.toml";
   if (std::filesystem::is_regular_file(written)) {
-    std::ifstream in(written, std::ios::binary);
-    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (const auto difference = config_difference(text, config))
+    if (const auto difference =
+            config_difference(read_input_file(written, "run's configuration"), config))
       throw InputError(
           fmt::format("{}: the run there has another configuration ({}): resume it with the same "
                       "configuration and --set options, or choose another --out",
@@ -99,7 +97,7 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
     // Nothing left to run: keep the finished run's files as they are.
     CellOutcome outcome;
     outcome.steps = cell.state().steps;
-    outcome.jammed = cell.state().jammed;
+    outcome.jammed = cell.state().jam.jammed;
     return outcome;
   }
   write_file_atomically(out / "config.toml", resolved_toml(config));
@@ -136,8 +134,9 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
   cost.build_s = build_s;
   cost.strain = cell.state().strain - strain_at_start;
   cost.wall_s = seconds_since(start);
-  cell.write_results(out, cost);
-  return outcome_of(cell, /*interrupted=*/false);
+  CellOutcome outcome = outcome_of(cell, /*interrupted=*/false);
+  outcome.summary = cell.write_results(out, cost);
+  return outcome;
 }
 
 }  // namespace dilatant

@@ -10,6 +10,7 @@
 // eta_f) — see docs/model.md.
 #include <atomic>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <utility>
 
 #include "drivers/run_options.hpp"
@@ -53,6 +54,10 @@ struct CellOutcome {
   long long contact_residual_body_i = -1, contact_residual_body_j = -1;
   bool interrupted = false;
   bool jammed = false;
+  // The summary.json the run wrote, as written; null when it wrote none
+  // (interrupted, or resumed with nothing left to run: the file on disk is
+  // the finished run's).
+  nlohmann::json summary;
 };
 
 CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options);

@@ -4,12 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "boundary/drive_record.hpp"
 #include "io/atomic_file.hpp"
 #include "io/binary_archive.hpp"
+#include "io/text.hpp"
 
 namespace dilatant {
 
@@ -63,19 +62,20 @@ void visit_state(Archive& a, State& s, DriveRecord& d) {
   a.value(s.dt);
   a.value(s.steps);
   a.value(s.strain);
-  a.value(s.next_row_strain);
-  a.value(s.next_snapshot_strain);
-  a.value(s.next_checkpoint_strain);
+  a.value(s.schedules.rows.next);
+  a.value(s.schedules.snapshots.next);
+  a.value(s.schedules.checkpoints.next);
   a.vector(s.snapshot_strains);
-  a.value(s.interval);
-  a.vector(s.rows);
-  a.value(s.profile.height());
-  a.vector(s.profile.sums());
-  a.vector(s.profile.weights());
-  a.value(s.histogram);
-  a.value(s.jam_window_strain);
-  a.value(s.jam_window_time);
-  a.value(s.jammed);
+  auto& m = s.measurements;
+  a.value(m.interval);
+  a.vector(m.rows);
+  a.value(m.profile.height());
+  a.vector(m.profile.sums());
+  a.vector(m.profile.weights());
+  a.value(m.histogram);
+  a.value(s.jam.window_strain);
+  a.value(s.jam.window_time);
+  a.value(s.jam.jammed);
 }
 
 }  // namespace
@@ -102,12 +102,10 @@ void save_checkpoint(const std::filesystem::path& file, const ShearCellState& st
 }
 
 ShearCellState load_checkpoint(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw std::runtime_error(file.string() + ": cannot read checkpoint");
-  std::ostringstream content;
-  content << in.rdbuf();
+  // A missing or unreadable one is named with its file (InputError).
+  std::string bytes = read_input_file(file, "checkpoint");
   try {
-    return read_checkpoint(content.str(), file);
+    return read_checkpoint(std::move(bytes), file);
   } catch (const std::runtime_error& e) {
     // The archive's own messages ("checkpoint is truncated") name no file.
     const std::string what = e.what();

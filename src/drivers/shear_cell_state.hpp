@@ -11,9 +11,9 @@
 #include "boundary/drive.hpp"
 #include "detection/contact.hpp"
 #include "drivers/shear_cell_builder.hpp"
-#include "measure/contact_statistics.hpp"
-#include "measure/flow_series.hpp"
-#include "measure/velocity_profile.hpp"
+#include "drivers/strain_schedule.hpp"
+#include "measure/cell_measurements.hpp"
+#include "measure/jam_watch.hpp"
 #include "world/world.hpp"
 
 namespace dilatant {
@@ -30,18 +30,10 @@ struct ShearCellState {
 
   long steps = 0;
   double strain = 0.0;
-  double next_row_strain = 0.0;
-  double next_snapshot_strain = 0.0;
-  double next_checkpoint_strain = 0.0;
+  CellSchedules schedules;               // rows, snapshots, checkpoints (their `next`)
   std::vector<double> snapshot_strains;  // strain of each ParaView snapshot written
-  IntervalSums interval;
-  std::vector<FlowRow> rows;
-  VelocityProfile profile;
-  SommerfeldHistogram histogram;
-  // Jam detection: strain and time at the start of the current window.
-  double jam_window_strain = 0.0;
-  double jam_window_time = 0.0;
-  bool jammed = false;
+  CellMeasurements measurements;
+  JamWatch jam;
 
   // The speed that sets the shear: the top wall's, or the images' above.
   double drive_speed() const { return drive->speed(world); }

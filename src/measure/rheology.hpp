@@ -1,15 +1,20 @@
 #pragma once
-// The cell's rheology, from the motion of its driven wall and the forces on its
-// walls (docs/shear-cell.md "summary.json"):
+// The cell's rheology, from the motion of its drive and the forces on its
+// walls or in its bulk (docs/shear-cell.md "summary.json"), the one place eta
+// is computed, for either control:
 //
 //     gamma_dot = V / Lz                         (the paper's shear rate)
+//     tau       = the applied stress (stress control), or the measured
+//                 particle shear stress sigma_zx (rate control)
 //     eta       = tau / gamma_dot                (apparent viscosity, here in eta_f)
-//     P         = normal force on the walls / (Lx Ly)
+//     P         = normal force on the walls / (Lx Ly), or the bulk's sigma_zz
 //     I         = gamma_dot R sqrt(rho_p / P)    (inertial number)
 //     J         = eta_f gamma_dot / P            (viscous number)
 //
-// Error bars are the block errors of the steady averages (measure/flow_series.hpp):
-// the relative error of eta is that of V (tau is imposed exactly).
+// Error bars are the block errors of the steady averages (measure/flow_series.hpp).
+// Under stress control tau is exact and eta carries the relative error of V;
+// under rate control V is exact and eta carries the error of the measured tau.
+#include <nlohmann/json.hpp>
 #include <vector>
 
 #include "measure/cell_units.hpp"
@@ -17,12 +22,13 @@
 
 namespace dilatant {
 
-// What sets the numbers: the cell's height and the stress applied to it.
+// What sets the numbers: the cell's height, its control and the stress applied to it.
 struct ShearGeometry {
-  double height = 0.0;        // Lz, code units
-  double shear_stress = 0.0;  // tau, code units
-  double radius = 0.0;        // R (the largest radius), for I
-  double density = 0.0;       // rho_p, for I
+  double height = 0.0;           // Lz, code units
+  double shear_stress = 0.0;     // tau applied, code units (stress control)
+  bool rate_controlled = false;  // the rate is imposed and tau measured
+  double radius = 0.0;           // R (the largest radius), for I
+  double density = 0.0;          // rho_p, for I
 };
 
 // Steady-state rheology, in code units except the viscosity (in eta_f).
@@ -30,8 +36,10 @@ struct Rheology {
   SteadyAverage wall_velocity;  // V
   double shear_rate = 0.0;      // V / Lz
   double shear_rate_err = 0.0;
-  double relative_error = 0.0;  // of V, gamma_dot and eta alike; 0 if the cell does not move
-  double viscosity = 0.0;       // tau / gamma_dot / eta_f; 0 if the cell does not move
+  double relative_error = 0.0;    // of V and gamma_dot alike; 0 if the cell does not move
+  double shear_stress = 0.0;      // tau: applied, or measured under rate control
+  double shear_stress_err = 0.0;  // 0 when applied
+  double viscosity = 0.0;         // tau / gamma_dot / eta_f; 0 if the cell does not move
   double viscosity_err = 0.0;
   SteadyAverage normal_stress;   // P
   double inertial_number = 0.0;  // 0 without a normal stress
@@ -49,5 +57,11 @@ inline double relative_viscosity(double shear_stress, double rate, double eta_f)
 // Averages over the rows past `from` (strain).
 Rheology steady_rheology(const std::vector<FlowRow>& rows, double from, const ShearGeometry& cell,
                          const CellUnits& units);
+
+// Its keys of summary.json in the paper's units: shear_stress, gamma_dot(_err),
+// eta(_err), wall_velocity(_err), normal_stress(_err), inertial_number,
+// viscous_number. A jammed cell has gamma_dot 0 and no eta (null).
+void write_rheology(nlohmann::json& summary, const Rheology& r, const CellUnits& units,
+                    bool jammed);
 
 }  // namespace dilatant

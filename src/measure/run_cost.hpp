@@ -4,8 +4,11 @@
 // Reported in summary.json so that every run is also a benchmark (bench/).
 // Times cover this invocation only (a resumed run counts from its restart).
 #include <chrono>
+#include <nlohmann/json.hpp>
 
 namespace dilatant {
+
+struct StepReport;
 
 struct RunCost {
   double wall_s = 0.0;             // whole invocation
@@ -23,6 +26,12 @@ struct RunCost {
   double ns_per_contact_update() const {
     return contact_updates > 0.0 ? 1e9 * solve_s / contact_updates : 0.0;
   }
+  // One more step (solver/time_stepper.hpp): its stages' times and its work.
+  void add_step(const StepReport& step);
+  // Its keys of summary.json: wall_time_s, threads, time_*_s,
+  // ns_per_contact_update, sweep_equivalents_per_step, wall_time_per_strain_s,
+  // frac_steps_dt_by_drive, steps_per_strain, peak_memory_mib.
+  void write(nlohmann::json& summary) const;
 };
 
 // Wall time since `start`, in seconds (the steady clock: never jumps).

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace dilatant::sweep {
 namespace {
@@ -64,7 +65,10 @@ std::string json_field(const nlohmann::json& v) {
   if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
   if (v.is_number_integer()) return fmt::format("{}", v.get<std::int64_t>());
   if (v.is_number_unsigned()) return fmt::format("{}", v.get<std::uint64_t>());
-  if (v.is_number_float()) return fmt::format("{}", v.get<double>());
+  // Not finite: summary.json writes null, so the table leaves it empty too
+  // (a summary taken from the run in memory must give the row its file gives).
+  if (v.is_number_float())
+    return std::isfinite(v.get<double>()) ? fmt::format("{}", v.get<double>()) : "";
   if (v.is_string()) return field(v.get<std::string>());
   return field(v.dump());
 }

@@ -2,28 +2,17 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "io/config_compare.hpp"
 #include "io/input_error.hpp"
+#include "io/text.hpp"
 
 namespace dilatant::sweep {
-namespace {
-
-std::string read_file(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-}  // namespace
 
 PointState inspect_point_folder(const SweepPoint& point, const std::filesystem::path& folder) {
   const auto config = folder / "config.toml";
   if (!std::filesystem::is_regular_file(config)) return PointState::Fresh;
-  if (const auto difference = config_difference(read_file(config), point.config, "in this sweep"))
+  if (const auto difference = config_difference(read_input_file(config, "run's configuration"),
+                                                point.config, "in this sweep"))
     throw InputError(fmt::format(
         "{}: holds a run of another configuration ({}): the sweep changed since it ran; use "
         "another --out, or delete that folder to run the point anew",

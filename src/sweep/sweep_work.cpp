@@ -2,13 +2,12 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
 #include <optional>
 #include <set>
-#include <sstream>
 
 #include "drivers/shear_cell_run.hpp"
 #include "io/atomic_file.hpp"
+#include "io/text.hpp"
 
 namespace dilatant::sweep {
 namespace {
@@ -16,10 +15,7 @@ namespace {
 constexpr const char* kColdStart = "cold-start";
 
 nlohmann::json read_summary(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return nlohmann::json::parse(text.str());  // throws on a corrupt file
+  return nlohmann::json::parse(read_input_file(file, "point's summary"));  // throws if corrupt
 }
 
 // A message on one line.
@@ -142,15 +138,19 @@ void SweepWork::confirm_jam(std::size_t i) {
   const auto folder = options_.out / plan_.points[i].folder / kColdStart;
   const PointState state = inspect_point_folder(cold, folder);
   try {
+    nlohmann::json summary;
     if (state != PointState::Done) {
       CellRunOptions o;
       o.run.out_dir = folder;
       o.run.quiet = true;
       o.resume = state == PointState::Resumable;
       o.stop_requested = &halt_;
-      if (run_shear_cell(cold.config, o).interrupted) return;
+      CellOutcome outcome = run_shear_cell(cold.config, o);
+      if (outcome.interrupted) return;
+      summary = std::move(outcome.summary);
     }
-    auto summary = read_summary(folder / "summary.json");
+    // A run finished before (by an earlier sweep) is read from its folder.
+    if (!summary.is_object()) summary = read_summary(folder / "summary.json");
     std::lock_guard lock(mutex_);
     records_[i].cold_start = std::move(summary);
     changed(i, true);
@@ -222,7 +222,11 @@ void SweepWork::run_point(std::size_t i) {
     }
     if (!std::filesystem::is_regular_file(folder / "summary.json"))
       throw std::runtime_error("the run ended without writing summary.json");
-    finish(i, PointStatus::Done, "", read_summary(folder / "summary.json"));
+    // The table takes the summary the run wrote, in memory; only a run that
+    // had finished before this sweep (resumed with nothing left) is read back.
+    finish(i, PointStatus::Done, "",
+           outcome.summary.is_object() ? std::move(outcome.summary)
+                                       : read_summary(folder / "summary.json"));
   } catch (const std::exception& e) {
     finish(i, PointStatus::Failed, one_line(e.what()));
     return;

@@ -81,6 +81,72 @@ TEST(Rheology, ViscosityCarriesTheRelativeErrorOfTheShearRate) {
   EXPECT_NEAR(r.shear_rate_err / r.shear_rate, error / 2.0, 1e-12);
 }
 
+// Under rate control (the Lees–Edwards box) V is imposed and tau measured:
+// eta = <sigma_zx> / gamma_dot, its error that of <sigma_zx> alone, and the
+// stress reported is the measured one, not an applied one. Block means of
+// sigma_zx alternate 0.9 / 1.1 about 1, V is constant.
+TEST(Rheology, UnderRateControlEtaIsTheMeasuredStressOverTheImposedRate) {
+  const double lz = 8.0, v = 2.0;
+  auto rows = series(
+      40, [&](int) { return v; }, [](int) { return 1.0; });
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const double tau = 1.0 + ((k / 4) % 2 == 0 ? 0.1 : -0.1);
+    rows[k].stress[tensor_index(kZ, kX)] = tau;  // sigma is symmetric
+    rows[k].stress[tensor_index(kX, kZ)] = tau;
+  }
+  const CellUnits u = make_cell_units(1.0, 1.0, 1.0, 10.0);
+  const Rheology r = steady_rheology(rows, 0.0,
+                                     {.height = lz,
+                                      .shear_stress = 123.0,  // ignored: not applied
+                                      .rate_controlled = true,
+                                      .radius = 1.0,
+                                      .density = 1.0},
+                                     u);
+  const double error = std::sqrt(0.01 * 10.0 / 9.0 / 10.0);  // as the test above, +-0.1
+  EXPECT_NEAR(r.shear_rate, v / lz, 4 * kEps * v / lz);
+  EXPECT_NEAR(r.shear_stress, 1.0, 1e-12);
+  EXPECT_NEAR(r.shear_stress_err, error, 1e-12);
+  EXPECT_NEAR(r.viscosity, 1.0 / (v / lz) / u.eta_f, 1e-12 * r.viscosity);
+  EXPECT_NEAR(r.viscosity_err, error / (v / lz) / u.eta_f, 1e-12 * r.viscosity);
+  // V is exact: its error bar is round-off only, and so is gamma_dot's.
+  EXPECT_LE(r.shear_rate_err, 4.0 * std::sqrt(kEps) * v / lz);
+}
+
+// Under stress control the stress reported is the applied one, exact, even
+// when the particles' measured stress differs from it (a transient, or the
+// wall layers' share): eta is tau / gamma_dot with the error of V alone.
+TEST(Rheology, UnderStressControlEtaIsTheAppliedStressOverTheMeasuredRate) {
+  auto rows = series(
+      40, [](int k) { return 2.0 + ((k / 4) % 2 == 0 ? 0.2 : -0.2); }, [](int) { return 1.0; });
+  for (FlowRow& row : rows) row.stress[tensor_index(kZ, kX)] = 7.0;
+  const Rheology r = steady_rheology(
+      rows, 0.0, {.height = 1.0, .shear_stress = 3.0, .radius = 1.0, .density = 1.0},
+      make_cell_units(1.0, 1.0, 1.0, 1.0));
+  EXPECT_EQ(r.shear_stress, 3.0);
+  EXPECT_EQ(r.shear_stress_err, 0.0);
+  EXPECT_NEAR(r.viscosity, 3.0 / 2.0, 1e-12);
+  EXPECT_NEAR(r.viscosity_err / r.viscosity, r.relative_error, 1e-14);
+}
+
+// The summary's keys in the paper's units, and a jam: no eta, gamma_dot 0.
+TEST(Rheology, WritesThePapersUnitsAndNoViscosityForAJam) {
+  auto rows = series(
+      20, [](int) { return 3.0; }, [](int) { return 50.0; });
+  const CellUnits u = make_cell_units(1.0, 1.0, 1.0, 10.0);
+  const Rheology r = steady_rheology(
+      rows, 0.0, {.height = 12.0, .shear_stress = 1.0, .radius = 1.0, .density = 1.0}, u);
+  nlohmann::json flowing, jammed;
+  write_rheology(flowing, r, u, false);
+  write_rheology(jammed, r, u, true);
+  EXPECT_NEAR(flowing["shear_stress"].get<double>(), 1.0 / u.stress_unit, 1e-12 / u.stress_unit);
+  EXPECT_NEAR(flowing["gamma_dot"].get<double>(), 3.0 / 12.0 / u.rate_unit, 1e-12 / u.rate_unit);
+  EXPECT_NEAR(flowing["normal_stress"].get<double>(), 50.0 / u.stress_unit, 1e-12 / u.stress_unit);
+  EXPECT_DOUBLE_EQ(flowing["eta"].get<double>(), r.viscosity);
+  EXPECT_EQ(jammed["gamma_dot"].get<double>(), 0.0);
+  EXPECT_TRUE(jammed["eta"].is_null());
+  EXPECT_TRUE(jammed["eta_err"].is_null());
+}
+
 // A cell that does not move (jammed) has no viscosity to report: 0, not inf.
 TEST(Rheology, ACellAtRestHasNoViscosity) {
   auto rows = series(

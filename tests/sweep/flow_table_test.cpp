@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 
 #include "analysis/analysis_input.hpp"
@@ -77,6 +78,26 @@ TEST(FlowTable, OneRowPerPointSweptKeysFirstThenStatusAndSummary) {
   EXPECT_EQ(column(3, "status"), "pending");  // running is pending in the table
   EXPECT_EQ(column(4, "eta"), "");            // jammed
   EXPECT_EQ(column(4, "jammed"), "true");
+}
+
+// A point's row is filled from the summary its run returns, in memory; a
+// resumed sweep reads finished points' summary.json from disk. Both must give
+// the same row, byte for byte: numbers print as the shortest text that reads
+// back exactly, and a value summary.json cannot hold (NaN, written as null)
+// is empty in either.
+TEST(FlowTable, SummaryInMemoryAndReadBackGiveTheSameRow) {
+  const SweepPlan plan = parse_sweep(test::kTinyGrid, "s.toml", ".", {});
+  nlohmann::json in_memory = summary(3.0, false);
+  in_memory["gamma_dot"] = 0.1 + 0.2;  // 0.30000000000000004: needs all 17 digits
+  in_memory["eta_err"] = std::nan("");
+  in_memory["mobile_spheres"] = std::size_t{470};
+  in_memory["steps"] = -1L;  // a signed integer in memory, any sign
+  std::vector<PointRecord> memory(4), disk(4);
+  memory[0] = {PointStatus::Done, "", in_memory, {}};
+  disk[0] = {PointStatus::Done, "", nlohmann::json::parse(in_memory.dump(2)), {}};
+  const auto from_memory = lines(flowcurves_csv(plan, memory));
+  EXPECT_EQ(from_memory, lines(flowcurves_csv(plan, disk)));
+  EXPECT_NE(from_memory[1].find(",0.30000000000000004,"), std::string::npos) << from_memory[1];
 }
 
 TEST(FlowTable, AnalyzeReadsDoneRowsOnlyAndGroupsCurvesByPhiAndSample) {

@@ -1,0 +1,25 @@
+#pragma once
+// The shear cell's time step, chosen before each step (solver.dt = 0), and the
+// fastest push-out of an overlap that goes with it (docs/model.md "Overlap
+// push-out").
+#include "boundary/drive.hpp"
+#include "io/config.hpp"
+#include "solver/local_problem.hpp"
+#include "world/world.hpp"
+
+namespace dilatant {
+
+struct TimeStepChoice {
+  double dt = 0.0;
+  bool by_drive = false;  // the drive's bound, not the fastest body, set it
+  double dt_drive = 0.0;  // the drive's bound alone (0 with a fixed solver.dt)
+  // Fastest push-out of an overlap, c r_min / dt_drive (none with a fixed
+  // solver.dt, whose step no speed can shorten).
+  double max_push_out = kNoPushOutCap;
+};
+
+// solver.dt if set; else no body may move more than c = solver.max_displacement
+// times r_min in one step, neither at its current speed nor under the drive.
+TimeStepChoice choose_time_step(const World& world, const Drive& drive, const SolverConfig& solver);
+
+}  // namespace dilatant
