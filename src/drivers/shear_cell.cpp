@@ -190,9 +190,9 @@ double ShearCell::accumulate(const StepReport& report, double velocity) {
   const double dt = s.dt, area = cell.size[0] * cell.size[1];
   const bool steady = s.strain > config_.run.transient_strain;
   const Drive& drive = *s.drive;
-  const ContactCounts n = count_contacts(drive.body_groups(), contacts, dt, config_.friction.s_lim,
+  const ContactCounts n = count_contacts(s.world.bodies, contacts, dt, config_.friction.s_lim,
                                          steady ? &s.histogram : nullptr);
-  const WallForces f = drive.wall_forces(contacts, dt);
+  const WallForces f = drive.wall_forces(s.world, contacts, dt);
   IntervalSums& a = s.interval;
   a.time += dt;
   a.velocity += velocity * dt;
@@ -252,7 +252,7 @@ double ShearCell::accumulate(const StepReport& report, double velocity) {
   }
   // On the walls, or without them the bulk's (Drive::normal_stress).
   a.normal_stress += drive.normal_stress(s.world, f, sigma[tensor_index(kZ, kZ)]) * dt;
-  if (steady) s.profile.add(s.world, drive.body_groups(), dt);
+  if (steady) s.profile.add(s.world, dt);
   return sigma[tensor_index(kZ, kX)];
 }
 
