@@ -137,14 +137,9 @@ void bind_shear_cell(py::module_& m) {
                              [](const ShearCell& c) { return values(c.state().world.bodies.id); })
       .def_property_readonly(
           "groups",
-          [](const ShearCell& c) {
-            // Without walls (Lees–Edwards) the list is empty: every body is a particle.
-            std::vector<std::uint8_t> g(c.state().world.bodies.size(), 0);
-            const auto groups = c.state().drive->body_groups();
-            for (std::size_t i = 0; i < groups.size(); ++i)
-              g[i] = static_cast<std::uint8_t>(groups[i]);
-            return values(g);
-          },
+          // Each body's owner (boundary/wall_owner.hpp); 0 for every body
+          // without walls (Lees–Edwards).
+          [](const ShearCell& c) { return values(c.state().world.bodies.owner); },
           "Per body: 0 mobile particle, 1 bottom wall, 2 top wall")
       .def("summary", &summary, "summary.json's fields so far, as a dict")
       .def("contacts_csv",

@@ -3,9 +3,10 @@
 // Dynamics step (solver/time_stepper.hpp) and a particular cell.
 //
 // A boundary owns degrees of freedom of its own (the shear cell's top wall: its
-// velocity V along x) and bodies whose motion those degrees of freedom set (the
-// wall's glued spheres, of infinite mass in every contact problem). The step
-// calls it at three fixed points:
+// velocity V along x) and the driven bodies whose motion those degrees of
+// freedom set (world/bodies.hpp: the wall's glued spheres, of infinite mass in
+// every contact problem; the boundary numbers its parts by their owner id).
+// The step calls it at three fixed points:
 //
 //   predict      stage 1, no contacts: advance the own degrees of freedom under
 //                their drive, V_free = V + dt F / M, and give the boundary's
@@ -19,18 +20,18 @@
 //                next even slabs (solver/slab_partition.hpp): it may write only
 //                bodies that contacts of even slabs do not touch.
 //
-// Contacts touching a body of the boundary (body_groups()) obey the boundary's
-// own contact law (contact_law()), e.g. the walls' rough-grain Coulomb friction.
+// Contacts touching a driven body obey the boundary's own contact law
+// (contact_law()), e.g. the walls' rough-grain Coulomb friction. Which bodies
+// are driven is written on the bodies themselves (Bodies::motion), so the
+// solver asks a body what it does, never the boundary whose it is.
 //
 // A cell's drive (drive.hpp) hands the stepper its block through this seam,
 // or none: the Lees–Edwards images (image_drive.hpp) keep their speed
 // constant within a step and have no bodies, so they take no part in the
 // contact problem; their offset and speed live in the PeriodicBox, which
 // detection and the contacts' relative velocity read.
-#include <span>
 #include <vector>
 
-#include "boundary/body_group.hpp"
 #include "detection/contact.hpp"
 #include "friction/friction_law.hpp"
 #include "world/bodies.hpp"
@@ -41,13 +42,11 @@ class Boundary {
  public:
   virtual ~Boundary() = default;
 
-  // The group of every body (empty: no body belongs to the boundary).
-  virtual std::span<const BodyGroup> body_groups() const = 0;
-  // The law of contacts that touch a body of the boundary.
+  // The law of contacts that touch a driven body.
   virtual const FrictionLaw& contact_law() const = 0;
 
   virtual void predict(Bodies& bodies, double dt) = 0;
-  virtual void begin_solve(const std::vector<Contact>& contacts) = 0;
+  virtual void begin_solve(const std::vector<Contact>& contacts, const Bodies& bodies) = 0;
   virtual void solve_block(const std::vector<Contact>& contacts, Bodies& bodies) = 0;
 };
 

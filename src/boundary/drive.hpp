@@ -32,11 +32,9 @@
 // world with it): every call that reads or changes the world's motion is
 // given it. The images' speed lives in the world's PeriodicBox, the one place
 // detection and the contacts' relative velocity read it from.
-#include <span>
 #include <string_view>
 #include <vector>
 
-#include "boundary/body_group.hpp"
 #include "boundary/boundary.hpp"
 #include "boundary/wall_forces.hpp"
 #include "detection/contact.hpp"
@@ -84,10 +82,8 @@ class Drive {
   // The drive's block in the contact problem, handed to the stepper; null if
   // it takes no part in it (its speed is constant within a step).
   virtual Boundary* contact_block() = 0;
-  // The group of every body (empty: the drive owns none); measurements leave
-  // the drive's bodies out.
-  virtual std::span<const BodyGroup> body_groups() const = 0;
-  // The law of contacts that touch the drive's bodies: a run setting, not
+  // The law of contacts that touch the drive's bodies (its driven bodies,
+  // world/bodies.hpp, which measurements of the flow leave out): a run setting, not
   // part of the state (ignored by a drive without bodies).
   virtual void set_contact_law(FrictionLaw law) = 0;
   // The longest step in which the drive moves nothing by more than `reach`
@@ -116,7 +112,8 @@ class Drive {
   // without walls).
   virtual bool bounded_by_walls() const = 0;
   // The forces of the step's contacts on the walls (zero without walls).
-  virtual WallForces wall_forces(const std::vector<Contact>& contacts, double dt) const = 0;
+  virtual WallForces wall_forces(const World& world, const std::vector<Contact>& contacts,
+                                 double dt) const = 0;
   // The normal stress the drive measures, compressive > 0: on its walls, from
   // their forces f; without walls the bulk's, -sigma_zz.
   virtual double normal_stress(const World& world, const WallForces& f, double sigma_zz) const = 0;
@@ -127,8 +124,8 @@ class Drive {
   // from this drive's state); false, changing nothing, if the spec asks for
   // another drive or a cell this state cannot be.
   virtual bool adopt(const DriveSpec& spec, World& world) = 0;
-  // What a checkpoint keeps of the drive (drive_record.hpp).
-  virtual DriveRecord record() const = 0;
+  // What a checkpoint keeps of the drive driving `world` (drive_record.hpp).
+  virtual DriveRecord record(const World& world) const = 0;
 };
 
 }  // namespace dilatant

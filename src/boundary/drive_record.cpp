@@ -5,7 +5,7 @@
 namespace dilatant {
 
 const char* DriveRecord::fault(const PeriodicBox& box, std::size_t bodies) const {
-  if (!groups.empty() && groups.size() != bodies) return "body groups";
+  if (!owners.empty() && owners.size() != bodies) return "body groups";
   for (const std::int32_t i : wall.spheres)
     if (i < 0 || static_cast<std::size_t>(i) >= bodies) return "wall sphere index";
   const bool mass_missing = box.lees_edwards ? !images.rate_controlled && !(images.mass > 0.0)
@@ -13,10 +13,15 @@ const char* DriveRecord::fault(const PeriodicBox& box, std::size_t bodies) const
   return mass_missing ? "boundary mass" : nullptr;
 }
 
-std::unique_ptr<Drive> restore_drive(DriveRecord record, const PeriodicBox& box, WallGap gap) {
-  if (box.lees_edwards) return std::make_unique<ImageDrive>(record.images);
-  return std::make_unique<WallDrive>(
-      RoughWalls(std::move(record.groups), std::move(record.wall), CoulombLaw{}), gap);
+std::unique_ptr<Drive> restore_drive(DriveRecord record, World& world, WallGap gap) {
+  Bodies& b = world.bodies;
+  b.motion.assign(b.size(), Motion::Dynamic);
+  b.owner.assign(b.size(), kNoOwner);
+  // A wall's sphere is driven (the bottom one at rest, the top one by V).
+  for (std::size_t i = 0; i < record.owners.size(); ++i)
+    if (record.owners[i] != kNoOwner) b.set_driven(i, record.owners[i]);
+  if (world.box.lees_edwards) return std::make_unique<ImageDrive>(record.images);
+  return std::make_unique<WallDrive>(RoughWalls(std::move(record.wall), CoulombLaw{}), gap);
 }
 
 }  // namespace dilatant

@@ -58,6 +58,8 @@ bool ImageDrive::adopt(const DriveSpec& spec, World& world) {
   return true;
 }
 
-DriveRecord ImageDrive::record() const { return {.groups = {}, .wall = {}, .images = control_}; }
+DriveRecord ImageDrive::record(const World&) const {
+  return {.owners = {}, .wall = {}, .images = control_};
+}
 
 }  // namespace dilatant

@@ -63,7 +63,6 @@ class ImageDrive final : public Drive {
 
   // No bodies, no block: every contact is between particles, under their law.
   Boundary* contact_block() override { return nullptr; }
-  std::span<const BodyGroup> body_groups() const override { return {}; }
   void set_contact_law(FrictionLaw) override {}
   double time_step_bound(const World& world, double reach) const override;
   double fed_work(const World& world, double sigma_zx, double dt) const override {
@@ -77,14 +76,16 @@ class ImageDrive final : public Drive {
   double kinetic_energy() const override { return 0.0; }
 
   bool bounded_by_walls() const override { return false; }
-  WallForces wall_forces(const std::vector<Contact>&, double) const override { return {}; }
+  WallForces wall_forces(const World&, const std::vector<Contact>&, double) const override {
+    return {};
+  }
   double normal_stress(const World&, const WallForces&, double sigma_zz) const override {
     return -sigma_zz;
   }
   BulkRegion bulk_region(const World& world) const override;
 
   bool adopt(const DriveSpec& spec, World& world) override;
-  DriveRecord record() const override;
+  DriveRecord record(const World& world) const override;
 
   // Power the images feed into the flow, A V sigma_zx (the work of the images
   // on the box; Evans & Morriss, "Statistical Mechanics of Nonequilibrium

@@ -10,14 +10,14 @@ void RoughWalls::predict(Bodies& bodies, double dt) {
   for (std::int32_t s : top_.spheres) bodies.velocity[s] = Vec3(free_velocity_, 0.0, 0.0);
 }
 
-void RoughWalls::begin_solve(const std::vector<Contact>& contacts) {
+void RoughWalls::begin_solve(const std::vector<Contact>& contacts, const Bodies& bodies) {
   top_contacts_.clear();
-  if (group_.empty()) return;
+  const std::vector<OwnerId>& owner = bodies.owner;
   for (std::size_t k = 0; k < contacts.size(); ++k) {
     const Contact& c = contacts[k];
     const auto index = static_cast<std::int32_t>(k);
-    if (group_[c.i] == BodyGroup::TopWall) top_contacts_.emplace_back(index, 1.0);
-    if (!c.with_plane() && group_[c.other] == BodyGroup::TopWall) {
+    if (owner[c.i] == kTopWall) top_contacts_.emplace_back(index, 1.0);
+    if (!c.with_plane() && owner[c.other] == kTopWall) {
       top_contacts_.emplace_back(index, -1.0);
     }
   }

@@ -8,11 +8,14 @@
 //
 // Its spheres have infinite mass in the contact problems; V is solved as its
 // own block of the Gauss–Seidel iteration (boundary.hpp) and copied to them.
+// The walls' spheres are driven bodies, owned by kBottomWall or kTopWall
+// (wall_owner.hpp).
 #include <cstdint>
 #include <utility>
 #include <vector>
 
 #include "boundary/boundary.hpp"
+#include "boundary/wall_owner.hpp"
 
 namespace dilatant {
 
@@ -27,19 +30,15 @@ struct SlidingWall {
 class RoughWalls final : public Boundary {
  public:
   RoughWalls() = default;
-  RoughWalls(std::vector<BodyGroup> group, SlidingWall top, FrictionLaw law)
-      : group_(std::move(group)), top_(std::move(top)), law_(std::move(law)) {}
+  RoughWalls(SlidingWall top, FrictionLaw law) : top_(std::move(top)), law_(std::move(law)) {}
 
-  std::span<const BodyGroup> body_groups() const override { return group_; }
   const FrictionLaw& contact_law() const override { return law_; }
   void set_contact_law(FrictionLaw law) { law_ = std::move(law); }
 
   void predict(Bodies& bodies, double dt) override;
-  void begin_solve(const std::vector<Contact>& contacts) override;
+  void begin_solve(const std::vector<Contact>& contacts, const Bodies& bodies) override;
   void solve_block(const std::vector<Contact>& contacts, Bodies& bodies) override;
 
-  const std::vector<BodyGroup>& groups() const { return group_; }
-  std::vector<BodyGroup>& groups() { return group_; }
   const SlidingWall& top() const { return top_; }
   SlidingWall& top() { return top_; }
   // Kinetic energy of the top wall as a rigid body, M V^2 / 2 (its spheres have
@@ -50,7 +49,6 @@ class RoughWalls final : public Boundary {
   double drive_work() const { return drive_work_; }
 
  private:
-  std::vector<BodyGroup> group_;
   SlidingWall top_;
   FrictionLaw law_ = CoulombLaw{};
   // Of the current step: V + dt F / M, the drive's work, and the contacts on the top wall with the

@@ -43,8 +43,8 @@ bool WallDrive::adopt(const DriveSpec& spec, World& world) {
   return true;
 }
 
-DriveRecord WallDrive::record() const {
-  return {.groups = walls_.groups(), .wall = walls_.top(), .images = {}};
+DriveRecord WallDrive::record(const World& world) const {
+  return {.owners = world.bodies.owner, .wall = walls_.top(), .images = {}};
 }
 
 }  // namespace dilatant

@@ -8,8 +8,9 @@
 //
 // solved within each step as the wall's own block of the Gauss–Seidel
 // iteration (rough_walls.hpp), so the wall has nothing to do between steps.
-// Its bodies are the walls' glued spheres; the mean flow is the no-slip
-// profile between the walls' mean surfaces.
+// Its bodies are the walls' glued spheres, driven bodies owned by the bottom
+// or the top wall (wall_owner.hpp); the mean flow is the no-slip profile
+// between the walls' mean surfaces.
 #include "boundary/drive.hpp"
 #include "boundary/rough_walls.hpp"
 
@@ -35,7 +36,6 @@ class WallDrive final : public Drive {
   std::string_view mover() const override { return "wall"; }
 
   Boundary* contact_block() override { return &walls_; }
-  std::span<const BodyGroup> body_groups() const override { return walls_.body_groups(); }
   void set_contact_law(FrictionLaw law) override { walls_.set_contact_law(std::move(law)); }
   double time_step_bound(const World& world, double reach) const override;
   double fed_work(const World&, double, double) const override { return walls_.drive_work(); }
@@ -47,14 +47,15 @@ class WallDrive final : public Drive {
   double kinetic_energy() const override { return walls_.kinetic_energy(); }
 
   bool bounded_by_walls() const override { return true; }
-  WallForces wall_forces(const std::vector<Contact>& contacts, double dt) const override {
-    return dilatant::wall_forces(walls_.body_groups(), contacts, dt);
+  WallForces wall_forces(const World& world, const std::vector<Contact>& contacts,
+                         double dt) const override {
+    return dilatant::wall_forces(world.bodies, contacts, dt);
   }
   double normal_stress(const World& world, const WallForces& f, double sigma_zz) const override;
   BulkRegion bulk_region(const World& world) const override;
 
   bool adopt(const DriveSpec& spec, World& world) override;
-  DriveRecord record() const override;
+  DriveRecord record(const World& world) const override;
 
   const RoughWalls& walls() const { return walls_; }
 

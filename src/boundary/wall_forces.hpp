@@ -2,7 +2,7 @@
 // Forces the contacts exert on the two walls during one step (impulse / dt).
 #include <vector>
 
-#include "boundary/body_group.hpp"
+#include "boundary/wall_owner.hpp"
 #include "detection/contact.hpp"
 
 namespace dilatant {
@@ -12,8 +12,7 @@ struct WallForces {
   Vec3 top = Vec3::Zero();     // on the moving wall (its spheres and the z = Lz plane)
 };
 
-// `group` is the walls' Boundary::body_groups().
-WallForces wall_forces(std::span<const BodyGroup> group, const std::vector<Contact>& contacts,
-                       double dt);
+// A body counts for the wall that owns it (wall_owner.hpp); particles for none.
+WallForces wall_forces(const Bodies& bodies, const std::vector<Contact>& contacts, double dt);
 
 }  // namespace dilatant

@@ -41,8 +41,7 @@ double project_out_overlaps(World& world, TimeStepper& projector, Boundary& wall
 
 }  // namespace
 
-GrowthReport grow_to_full_size(World& world, std::size_t first, double initial_scale,
-                               const std::vector<BodyGroup>& group) {
+GrowthReport grow_to_full_size(World& world, std::size_t first, double initial_scale) {
   Bodies& b = world.bodies;
   const std::vector<double> final_radius(b.radius.begin(), b.radius.end());
   const double r_min =
@@ -55,7 +54,7 @@ GrowthReport grow_to_full_size(World& world, std::size_t first, double initial_s
   TimeStepper projector(frictionless,
                         SolverSettings{.tolerance = 1e-4, .max_iterations = 500, .relaxation = 1.0},
                         1.0);
-  FixedWalls walls(group, frictionless);
+  FixedWalls walls(frictionless);
 
   GrowthReport report;
   for (double scale = initial_scale; scale < 1.0;) {

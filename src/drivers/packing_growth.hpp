@@ -8,9 +8,7 @@
 // g + dt u_n >= 0 of the time step), which are then applied and forgotten.
 // Fixed bodies (walls) and planes take part as immovable obstacles.
 #include <cstddef>
-#include <vector>
 
-#include "boundary/body_group.hpp"
 #include "world/world.hpp"
 
 namespace dilatant {
@@ -25,9 +23,8 @@ struct GrowthReport {
 };
 
 // Grows bodies [first, end) from `initial_scale` x their radius to full size.
-// Radii in `world` must be the final ones; masses are left untouched. `group`
-// names the bodies of the walls (empty: none), which stay where they are.
-GrowthReport grow_to_full_size(World& world, std::size_t first, double initial_scale,
-                               const std::vector<BodyGroup>& group = {});
+// Radii in `world` must be the final ones; masses are left untouched. Driven
+// bodies (a cell's walls, world/bodies.hpp) stay where they are.
+GrowthReport grow_to_full_size(World& world, std::size_t first, double initial_scale);
 
 }  // namespace dilatant

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "boundary/wall_monolayer.hpp"
+#include "boundary/wall_owner.hpp"
 #include "drivers/packing_growth.hpp"
 #include "io/input_error.hpp"
 
@@ -19,12 +20,11 @@ namespace {
 
 double sphere_volume(double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r; }
 
-void add_wall(World& world, std::vector<BodyGroup>& groups, const std::vector<WallSphere>& spheres,
-              BodyGroup group, double density) {
+void add_wall(World& world, const std::vector<WallSphere>& spheres, OwnerId wall, double density) {
   for (const WallSphere& s : spheres) {
     world.bodies.add_sphere(static_cast<std::int64_t>(world.bodies.size()), s.position, s.radius,
                             density, /*fixed=*/true);
-    groups.push_back(group);
+    world.bodies.set_driven(world.bodies.size() - 1, wall);
   }
 }
 
@@ -34,8 +34,7 @@ void add_wall(World& world, std::vector<BodyGroup>& groups, const std::vector<Wa
 // height. Sets the geometry's mobile count and first index; returns the
 // spheres' volume.
 double add_mobile_spheres(const Config& config, double counted_height, double z_lo, double z_hi,
-                          std::mt19937_64& rng, World& world, std::vector<BodyGroup>& group,
-                          ShearCellGeometry& geometry) {
+                          std::mt19937_64& rng, World& world, ShearCellGeometry& geometry) {
   const CellConfig& cell = *config.cell();
   const double lx = cell.size[0], ly = cell.size[1], lz = cell.size[2];
   const double target_volume = cell.phi * lx * ly * counted_height;
@@ -64,12 +63,11 @@ double add_mobile_spheres(const Config& config, double counted_height, double z_
     const double px = ux(rng);
     world.bodies.add_sphere(static_cast<std::int64_t>(world.bodies.size()), Vec3(px, py, pz), r,
                             config.density, false);
-    group.push_back(BodyGroup::Particle);
   }
 
   // Start the growth where random positions overlap little (phi ~ 0.2).
   const double initial_scale = std::min(1.0, std::cbrt(0.2 / cell.phi));
-  const GrowthReport growth = grow_to_full_size(world, geometry.first_mobile, initial_scale, group);
+  const GrowthReport growth = grow_to_full_size(world, geometry.first_mobile, initial_scale);
   geometry.growth_steps = growth.inflation_steps + growth.relaxation_steps;
   geometry.max_overlap = growth.max_overlap;
   if (growth.max_overlap > kPackingOverlapTolerance * cell.radius_min) {
@@ -101,7 +99,6 @@ World build_shear_cell(const Config& config, ShearCellGeometry& geometry, RoughW
   std::mt19937_64 rng(static_cast<std::uint64_t>(cell.seed));
 
   World world;
-  std::vector<BodyGroup> group;  // per body
   world.box.length = Vec3(lx, ly, lz);
   world.box.periodic = {true, true, false};
   world.planes.push_back(Plane{Vec3::Zero(), Vec3::UnitZ()});
@@ -109,8 +106,8 @@ World build_shear_cell(const Config& config, ShearCellGeometry& geometry, RoughW
 
   const auto bottom = random_monolayer(lx, ly, 0.0, cell.radius_min, cell.radius_max, rng);
   const auto top = random_monolayer(lx, ly, lz, cell.radius_min, cell.radius_max, rng);
-  add_wall(world, group, bottom, BodyGroup::BottomWall, config.density);
-  add_wall(world, group, top, BodyGroup::TopWall, config.density);
+  add_wall(world, bottom, kBottomWall, config.density);
+  add_wall(world, top, kTopWall, config.density);
   double wall_radius_sum = 0.0;
   for (const auto& s : bottom) wall_radius_sum += s.radius;
   for (const auto& s : top) wall_radius_sum += s.radius;
@@ -122,14 +119,14 @@ World build_shear_cell(const Config& config, ShearCellGeometry& geometry, RoughW
   const double counted_height =
       cell.phi_definition == PhiDefinition::Box ? lz : geometry.gap_height;
   const double volume = add_mobile_spheres(config, counted_height, cell.radius_max,
-                                           lz - cell.radius_max, rng, world, group, geometry);
+                                           lz - cell.radius_max, rng, world, geometry);
   geometry.phi = volume / (lx * ly * geometry.gap_height);
   geometry.phi_box = volume / (lx * ly * lz);
 
   SlidingWall wall;
   double wall_mass = 0.0;
   for (std::size_t i = 0; i < world.bodies.size(); ++i) {
-    if (group[i] != BodyGroup::TopWall) continue;
+    if (world.bodies.owner[i] != kTopWall) continue;
     wall.spheres.push_back(static_cast<std::int32_t>(i));
     wall_mass += config.density * sphere_volume(world.bodies.radius[i]);
   }
@@ -141,11 +138,11 @@ World build_shear_cell(const Config& config, ShearCellGeometry& geometry, RoughW
   // in the paper's cell).
   wall.velocity = cell.initial_shear_rate * lz;
   for (std::size_t i = 0; i < world.bodies.size(); ++i) {
-    if (group[i] == BodyGroup::TopWall) world.bodies.velocity[i] = Vec3(wall.velocity, 0, 0);
-    if (group[i] != BodyGroup::Particle) continue;
+    if (world.bodies.owner[i] == kTopWall) world.bodies.velocity[i] = Vec3(wall.velocity, 0, 0);
+    if (world.bodies.is_driven(i)) continue;
     world.bodies.velocity[i] = Vec3(cell.initial_shear_rate * world.bodies.position[i][2], 0, 0);
   }
-  walls = RoughWalls(std::move(group), std::move(wall), CoulombLaw{});
+  walls = RoughWalls(std::move(wall), CoulombLaw{});
   return world;
 }
 
@@ -198,9 +195,8 @@ World build_lees_edwards_cell(const Config& config, ShearCellGeometry& geometry,
   world.box.length = Vec3(lx, ly, lz);
   world.box.periodic = {true, true, true};
   world.box.lees_edwards = true;  // at rest while the packing grows
-  std::vector<BodyGroup> group;   // all particles
   // phi is exact here: the mobile spheres' volume over Lx Ly Lz, no walls.
-  const double volume = add_mobile_spheres(config, lz, 0.0, lz, rng, world, group, geometry);
+  const double volume = add_mobile_spheres(config, lz, 0.0, lz, rng, world, geometry);
   geometry.phi_box = volume / (lx * ly * lz);
   geometry.phi = geometry.phi_box;
   geometry.gap_height = lz;

@@ -25,11 +25,9 @@ void ShearCell::write_snapshot(const std::filesystem::path& out) {
   std::filesystem::create_directories(out / "snapshots");
   const auto particles = fmt::format("snapshots/particles_{:04d}.vtp", k);
   const auto network = fmt::format("snapshots/contacts_{:04d}.vtp", k);
-  std::vector<std::uint8_t> groups;
-  // Without walls every body is a particle (the groups are empty: zeros),
-  // drawn at its wrapped position in the box.
-  for (BodyGroup g : s.drive->body_groups()) groups.push_back(static_cast<std::uint8_t>(g));
-  write_particles_vtp(out / particles, s.world, groups);
+  // Each body's group is its owner (boundary/wall_owner.hpp); without walls
+  // every body is a particle, drawn at its wrapped position in the box.
+  write_particles_vtp(out / particles, s.world, s.world.bodies.owner);
   write_contacts_vtp(out / network, s.world, stepper_.contacts(), s.dt);
   s.snapshot_strains.push_back(s.strain);
   // The collection's "timestep" is the strain at the snapshot.

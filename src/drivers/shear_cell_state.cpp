@@ -34,7 +34,7 @@ void visit_state(Archive& a, State& s, DriveRecord& d) {
   a.vector(b.inv_mass);
   a.vector(b.inv_inertia);
   a.vector(b.id);
-  a.vector(d.groups);
+  a.vector(d.owners);
   std::uint64_t planes = s.world.planes.size();
   a.count(planes, 2 * sizeof(Vec3));
   s.world.planes.resize(planes);
@@ -84,7 +84,7 @@ void save_checkpoint(const std::filesystem::path& file, const ShearCellState& st
   BinaryWriter w;
   w.value(kMagic);
   // visit_state needs mutable access for the reader; the writer only reads.
-  DriveRecord drive = state.drive->record();
+  DriveRecord drive = state.drive->record(state.world);
   visit_state(w, const_cast<ShearCellState&>(state), drive);
   // Contact memory (warm-start impulses and regimes), sorted by key so the file
   // is reproducible.
@@ -175,7 +175,7 @@ ShearCellState read_checkpoint(std::string bytes, const std::filesystem::path& f
   }
   if (!r.at_end()) throw std::runtime_error(file.string() + ": checkpoint has trailing data");
   check_consistent(s, drive, file);
-  s.drive = restore_drive(std::move(drive), s.world.box, s.geometry.wall_gap());
+  s.drive = restore_drive(std::move(drive), s.world, s.geometry.wall_gap());
   return s;
 }
 

@@ -16,9 +16,8 @@ namespace dilatant {
 
 double bulk_fraction(const ShearCellState& s) {
   const BulkRegion region = s.drive->bulk_region(s.world);
-  return region.whole_box
-             ? s.geometry.phi_box
-             : slab_volume_fraction(s.world, s.drive->body_groups(), region.z_lo, region.z_hi);
+  return region.whole_box ? s.geometry.phi_box
+                          : slab_volume_fraction(s.world, region.z_lo, region.z_hi);
 }
 
 nlohmann::json cell_summary(const Config& config, const CellUnits& u, const ShearCellState& s,

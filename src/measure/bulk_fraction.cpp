@@ -5,12 +5,11 @@
 
 namespace dilatant {
 
-double slab_volume_fraction(const World& world, std::span<const BodyGroup> group, double z_lo,
-                            double z_hi) {
+double slab_volume_fraction(const World& world, double z_lo, double z_hi) {
   const Bodies& b = world.bodies;
   double volume = 0.0;
   for (std::size_t i = 0; i < b.size(); ++i) {
-    if (is_boundary_body(group, i)) continue;
+    if (b.is_driven(i)) continue;
     const double r = b.radius[i], z0 = b.position[i][2];
     const double lo = std::max(z_lo, z0 - r) - z0, hi = std::min(z_hi, z0 + r) - z0;
     if (hi <= lo) continue;

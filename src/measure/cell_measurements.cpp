@@ -16,9 +16,9 @@ double CellMeasurements::accumulate(const StepSample& step, const MeasurementSet
   const Drive& drive = step.drive;
   const double dt = step.dt;
   const bool steady = step.strain > settings.transient_strain;
-  const ContactCounts n = count_contacts(drive.body_groups(), contacts, dt, settings.s_lim,
+  const ContactCounts n = count_contacts(step.world.bodies, contacts, dt, settings.s_lim,
                                          steady ? &histogram : nullptr);
-  const WallForces f = drive.wall_forces(contacts, dt);
+  const WallForces f = drive.wall_forces(step.world, contacts, dt);
   IntervalSums& a = interval;
   a.time += dt;
   a.velocity += step.velocity * dt;
@@ -79,7 +79,7 @@ double CellMeasurements::accumulate(const StepSample& step, const MeasurementSet
   }
   // On the walls, or without them the bulk's (Drive::normal_stress).
   a.normal_stress += drive.normal_stress(step.world, f, sigma[tensor_index(kZ, kZ)]) * dt;
-  if (steady) profile.add(step.world, drive.body_groups(), dt);
+  if (steady) profile.add(step.world, dt);
   return sigma[tensor_index(kZ, kX)];
 }
 

@@ -5,7 +5,7 @@
 // closes a row when its schedule says so, and at the end asks for the typed
 // records the summary is written from (measure/rheology.hpp,
 // measure/cell_records.hpp). The drive (boundary/drive.hpp) answers the
-// questions that depend on what shears the cell: its bodies, the forces on its
+// questions that depend on what shears the cell: the forces on its
 // walls, its mean flow and its normal stress.
 //
 // It is part of the checkpoint (drivers/shear_cell_state.cpp writes its

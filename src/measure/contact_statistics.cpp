@@ -25,13 +25,13 @@ double SommerfeldHistogram::bin_lower_edge(int k) {
   return std::pow(10.0, kLogMin + double(k) / kBinsPerDecade);
 }
 
-ContactCounts count_contacts(std::span<const BodyGroup> group, const std::vector<Contact>& contacts,
-                             double dt, double s_lim, SommerfeldHistogram* histogram) {
+ContactCounts count_contacts(const Bodies& bodies, const std::vector<Contact>& contacts, double dt,
+                             double s_lim, SommerfeldHistogram* histogram) {
   ContactCounts n;
   for (const Contact& c : contacts) {
     if (c.p_n <= 0.0 || c.with_plane()) continue;
-    if (is_boundary_body(group, static_cast<std::size_t>(c.i)) ||
-        is_boundary_body(group, static_cast<std::size_t>(c.other))) {
+    if (bodies.is_driven(static_cast<std::size_t>(c.i)) ||
+        bodies.is_driven(static_cast<std::size_t>(c.other))) {
       continue;
     }
     n.closed += 1.0;

@@ -1,13 +1,13 @@
 #pragma once
 // Friction-regime statistics of the particle–particle contacts that carry load
-// (contacts with a wall obey the wall's law and are left out): the fraction of
+// (contacts with a plane or a driven body, world/bodies.hpp, obey the
+// boundary's law and are left out): the fraction of
 // boundary-lubricated contacts P_BL (sticking or sliding with s < s_c), the
 // fraction beyond s_lim, and the distribution P(s) in logarithmic bins.
 #include <array>
 #include <cstddef>
 #include <vector>
 
-#include "boundary/body_group.hpp"
 #include "detection/contact.hpp"
 #include "world/world.hpp"
 
@@ -40,9 +40,9 @@ struct ContactCounts {
   double sliding_power_hd = 0.0;
 };
 
-// Counts over the particle–particle contacts of one step (dt converts impulses
-// to forces); adds their s values to `histogram` if given.
-ContactCounts count_contacts(std::span<const BodyGroup> group, const std::vector<Contact>& contacts,
-                             double dt, double s_lim, SommerfeldHistogram* histogram);
+// Counts over the contacts of one step between two dynamic bodies (dt converts
+// impulses to forces); adds their s values to `histogram` if given.
+ContactCounts count_contacts(const Bodies& bodies, const std::vector<Contact>& contacts, double dt,
+                             double s_lim, SommerfeldHistogram* histogram);
 
 }  // namespace dilatant

@@ -22,7 +22,7 @@ SedimentFraction sediment_fraction(const World& world, double radius_max, double
   if (slabs <= 0) return out;
   std::vector<double> profile(static_cast<std::size_t>(slabs));
   for (int k = 0; k < slabs; ++k)
-    profile[std::size_t(k)] = slab_volume_fraction(world, {}, k * dz, (k + 1) * dz);
+    profile[std::size_t(k)] = slab_volume_fraction(world, k * dz, (k + 1) * dz);
 
   // Plateau: the interior, clear of the floor's layers and of the top's ragged
   // edge; the whole column if the sediment is too thin for that.
@@ -48,7 +48,7 @@ SedimentFraction sediment_fraction(const World& world, double radius_max, double
     }
   }
   const double z_lo = exclusion, z_hi = out.surface - exclusion;
-  out.phi = z_hi > z_lo ? slab_volume_fraction(world, {}, z_lo, z_hi) : 0.0;
+  out.phi = z_hi > z_lo ? slab_volume_fraction(world, z_lo, z_hi) : 0.0;
   return out;
 }
 

@@ -24,7 +24,7 @@ struct SedimentFraction {
 
 // `radius_max` scales the slabs and the interior; `exclusion` is measured from
 // the floor and from the surface. Every body of `world` counts (a sediment has
-// no wall spheres).
+// no driven bodies).
 SedimentFraction sediment_fraction(const World& world, double radius_max, double exclusion);
 
 }  // namespace dilatant

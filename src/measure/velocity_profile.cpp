@@ -7,10 +7,10 @@
 
 namespace dilatant {
 
-void VelocityProfile::add(const World& world, std::span<const BodyGroup> group, double weight) {
+void VelocityProfile::add(const World& world, double weight) {
   const Bodies& b = world.bodies;
   for (std::size_t i = 0; i < b.size(); ++i) {
-    if (is_boundary_body(group, i)) continue;
+    if (b.is_driven(i)) continue;
     const int k = static_cast<int>(b.position[i][2] / lz_ * bins());
     if (k < 0 || k >= bins()) continue;
     sum_vx_[k] += weight * b.velocity[i][0];

@@ -1,12 +1,12 @@
 #pragma once
-// Mean x-velocity of the mobile spheres in slabs across the gap, accumulated
+// Mean x-velocity of the dynamic bodies (world/bodies.hpp: a boundary's driven
+// bodies are left out) in slabs across the gap, accumulated
 // over the steady state (each sample weighted by its step's duration).
 // Its slope in the central region is the bulk shear rate gamma_dot_bulk; a
 // profile that is not linear across the gap means wall slip or a shear band.
 #include <string>
 #include <vector>
 
-#include "boundary/body_group.hpp"
 #include "world/world.hpp"
 
 namespace dilatant {
@@ -21,7 +21,7 @@ class VelocityProfile {
   VelocityProfile() = default;
   VelocityProfile(double lz, int bins) : lz_(lz), sum_vx_(bins, 0.0), weight_(bins, 0.0) {}
 
-  void add(const World& world, std::span<const BodyGroup> group, double weight);
+  void add(const World& world, double weight);
   int bins() const { return static_cast<int>(sum_vx_.size()); }
   double bin_centre(int k) const { return (k + 0.5) * lz_ / bins(); }
   double mean_vx(int k) const { return weight_[k] > 0.0 ? sum_vx_[k] / weight_[k] : 0.0; }

@@ -17,17 +17,17 @@ namespace {
 
 constexpr int kAxis = 2;  // z
 
-bool touches_boundary(std::span<const BodyGroup> group, const Contact& c) {
-  if (group.empty()) return false;
-  return is_boundary_body(group, static_cast<std::size_t>(c.i)) ||
-         (!c.with_plane() && is_boundary_body(group, static_cast<std::size_t>(c.other)));
+bool touches_driven_body(const Bodies& b, const Contact& c) {
+  return b.is_driven(static_cast<std::size_t>(c.i)) ||
+         (!c.with_plane() && b.is_driven(static_cast<std::size_t>(c.other)));
 }
 
 double contact_point(const Contact& c, const Bodies& b) {
   return b.position[c.i][kAxis] - c.arm_i * c.normal[kAxis];
 }
 
-// Whether the slabs wrap around z: a Lees–Edwards box (z periodic, no walls).
+// Whether the slabs wrap around z: a Lees–Edwards box (z periodic, bounded by
+// nothing).
 bool cyclic_slabs(const World& world) {
   return world.box.periodic[kAxis] && world.box.lees_edwards;
 }
@@ -59,7 +59,6 @@ Extent contact_extent(const std::vector<Contact>& contacts, const World& world) 
 }  // namespace
 
 SlabPartition partition_into_slabs(std::vector<Contact>& contacts, const World& world,
-                                   std::span<const BodyGroup> boundary_bodies,
                                    std::vector<Contact>& scratch) {
   int slabs = 1;
   Extent e;
@@ -78,8 +77,8 @@ SlabPartition partition_into_slabs(std::vector<Contact>& contacts, const World& 
     for (int n = 4; n <= kMaxSlabs && std::isfinite(e.reach) && period / n >= 2.0 * e.reach; n *= 2)
       slabs = n;
   } else if (!world.box.periodic[kAxis] && !contacts.empty()) {
-    // Bounded z (the wall cell). A periodic z without Lees–Edwards (a scene)
-    // keeps one slab, as before the cyclic partition.
+    // Bounded z. A periodic z without Lees–Edwards (a scene) keeps one slab,
+    // as before the cyclic partition.
     e = contact_extent(contacts, world);
     const double length = e.high - e.low;
     // A flat (or non-finite) extent gives one slab: no width to cut.
@@ -87,7 +86,7 @@ SlabPartition partition_into_slabs(std::vector<Contact>& contacts, const World& 
       while (2 * slabs <= kMaxSlabs && length / (2 * slabs) >= 2.0 * e.reach) slabs *= 2;
   }
   const double width = slabs > 1 ? (e.high - e.low) / slabs : 1.0;
-  // Counting sort on key = 2 slab + touches_boundary: stable, O(contacts).
+  // Counting sort on key = 2 slab + touches_driven_body: stable, O(contacts).
   const auto key = [&](const Contact& c) {
     int slab = 0;
     if (slabs > 1) {
@@ -98,7 +97,7 @@ SlabPartition partition_into_slabs(std::vector<Contact>& contacts, const World& 
       const double at = (z - e.low) / width;
       slab = std::isfinite(at) ? static_cast<int>(std::clamp(at, 0.0, double(slabs - 1))) : 0;
     }
-    return 2 * slab + (touches_boundary(boundary_bodies, c) ? 1 : 0);
+    return 2 * slab + (touches_driven_body(world.bodies, c) ? 1 : 0);
   };
   std::vector<std::size_t> first(2 * static_cast<std::size_t>(slabs) + 1, 0);
   for (const Contact& c : contacts) ++first[static_cast<std::size_t>(key(c)) + 1];

@@ -8,8 +8,10 @@
 // contact point, so contacts of two slabs that are not neighbours never share
 // a sphere that moves (fixed bodies, inv_mass = 0, are never written). A sweep
 // therefore solves all even slabs side by side, then all odd ones; inside a
-// slab contacts keep their (i, j) order. The order is fixed by the geometry
-// alone, so 1, 2 or 4 threads compute bit-identical impulses.
+// slab contacts keep their (i, j) order, those touching a driven body
+// (world/bodies.hpp) after the others: they obey the boundary's law, one
+// dispatch per range. The order is fixed by the geometry and the bodies'
+// motion types alone, so 1, 2 or 4 threads compute bit-identical impulses.
 //
 // Why z: in the shear cell spheres move along x and only diffuse in z, so
 // spheres numbered by height at the start (drivers/shear_cell_builder.cpp) stay
@@ -20,19 +22,18 @@
 // count: the first and last slabs, neighbours through the boundary, have
 // different colours; slab_partition.cpp).
 #include <cstddef>
-#include <span>
 #include <vector>
 
-#include "boundary/body_group.hpp"
 #include "detection/contact.hpp"
 #include "world/world.hpp"
 
 namespace dilatant {
 
 struct SlabPartition {
-  // Slab k holds contacts [begin[k], boundary_begin[k]) between particles and
-  // [boundary_begin[k], begin[k + 1]) touching a body of the boundary (a wall
-  // sphere; they obey the boundary's contact law). begin has count() + 1 entries.
+  // Slab k holds contacts [begin[k], boundary_begin[k]) between dynamic bodies
+  // (or a dynamic body and a plane) and [boundary_begin[k], begin[k + 1])
+  // touching a driven body (world/bodies.hpp; they obey the boundary's contact
+  // law). begin has count() + 1 entries.
   std::vector<std::size_t> begin{0, 0};
   std::vector<std::size_t> boundary_begin{0};
 
@@ -43,10 +44,9 @@ struct SlabPartition {
 inline constexpr int kMaxSlabs = 8;
 
 // Reorders `contacts` by slab (keeping their relative order inside a slab) and
-// returns the ranges; `boundary_bodies` is Boundary::body_groups() (empty: no
-// boundary); `scratch` is reused storage.
+// returns the ranges, reading which bodies are driven from world.bodies;
+// `scratch` is reused storage.
 SlabPartition partition_into_slabs(std::vector<Contact>& contacts, const World& world,
-                                   std::span<const BodyGroup> boundary_bodies,
                                    std::vector<Contact>& scratch);
 
 }  // namespace dilatant

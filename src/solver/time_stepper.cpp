@@ -117,9 +117,7 @@ StepReport TimeStepper::step(World& world, Boundary* boundary) {
   detector_.detect(world, std::max(detection_margin(world), pair_range), contacts_,
                    settings_.threads);
   if (pair_range > 0.0) fluid_->pair_resistance(contacts_, dt_);
-  const std::span<const BodyGroup> boundary_bodies =
-      boundary != nullptr ? boundary->body_groups() : std::span<const BodyGroup>{};
-  slabs_ = partition_into_slabs(contacts_, world, boundary_bodies, scratch_);
+  slabs_ = partition_into_slabs(contacts_, world, scratch_);
   // The contacts' work is taken from the velocities before the drag acted
   // (fluid/implicit_drag.hpp), so that it and the drag's work add up exactly.
   if (implicit_drag_.active()) implicit_drag_.swap_predicted_velocities(b);
@@ -127,7 +125,7 @@ StepReport TimeStepper::step(World& world, Boundary* boundary) {
   if (implicit_drag_.active()) implicit_drag_.swap_predicted_velocities(b);
   warm_start(b);
   const auto solve_start = Clock::now();
-  if (boundary != nullptr) boundary->begin_solve(contacts_);
+  if (boundary != nullptr) boundary->begin_solve(contacts_, b);
   report.solve = solve_contacts({.contacts = contacts_,
                                  .slabs = slabs_,
                                  .bodies = b,
@@ -157,7 +155,7 @@ StepReport TimeStepper::step(World& world, Boundary* boundary) {
   report.contact_work = contact_work(contacts_, free_velocity_, end_velocity_);
 
   // 6. integrate positions with the end-of-step velocities (a body of infinite
-  // mass may still move at a prescribed velocity, like a driven wall); a body
+  // mass may still move at a prescribed velocity: a driven body); a body
   // leaving through a Lees–Edwards boundary re-enters where the copies have
   // moved to at the step's end.
   world.box.advance_shear(dt_);

@@ -16,6 +16,8 @@ void Bodies::add_sphere(std::int64_t user_id, const Vec3& x, double r, double de
   inv_mass.push_back(fixed ? 0.0 : 1.0 / m);
   inv_inertia.push_back(fixed ? 0.0 : 1.0 / (0.4 * m * r * r));
   id.push_back(user_id);
+  motion.push_back(Motion::Dynamic);
+  owner.push_back(kNoOwner);
 }
 
 std::ptrdiff_t Bodies::first_non_finite() const {
@@ -62,6 +64,8 @@ void Bodies::reorder(std::size_t first, const std::vector<std::size_t>& order) {
   permute_tail(inv_mass, first, order);
   permute_tail(inv_inertia, first, order);
   permute_tail(id, first, order);
+  permute_tail(motion, first, order);
+  permute_tail(owner, first, order);
 }
 
 }  // namespace dilatant

@@ -79,7 +79,6 @@ TEST(ImageDrive, IsAWallFreeHomogeneousShear) {
   World w = box_at(1.2);
   ImageDrive drive(ImageDrive::control_for(stress_spec(0.1), 1.0));
   EXPECT_EQ(drive.contact_block(), nullptr);
-  EXPECT_TRUE(drive.body_groups().empty());
   EXPECT_FALSE(drive.bounded_by_walls());
   EXPECT_EQ(drive.kinetic_energy(), 0.0);
   const ShearFlow flow = drive.mean_flow(w);
@@ -112,13 +111,19 @@ TEST(ImageDrive, ContinuesUnderAnotherControlButNotAsAnotherCell) {
 
 // A checkpoint's record gives back the drive it came from.
 TEST(ImageDrive, ComesBackFromItsRecord) {
-  const World w = box_at(1.2);
+  World w = box_at(1.2);
+  w.bodies.add_sphere(0, Vec3(1.0, 1.0, 1.0), 0.5, 1.0, false);
   const ImageDrive drive(ImageDrive::control_for(stress_spec(0.1), 3.0));
-  const DriveRecord record = drive.record();
-  EXPECT_TRUE(record.groups.empty());
+  const DriveRecord record = drive.record(w);
+  EXPECT_TRUE(record.owners.empty());
   EXPECT_TRUE(record.wall.spheres.empty());
   EXPECT_EQ(record.fault(w.box, 10), nullptr);
-  const auto back = restore_drive(record, w.box, {});
+  World read = w;  // as a checkpoint reads it: bodies without motion or owner
+  read.bodies.motion.clear();
+  read.bodies.owner.clear();
+  const auto back = restore_drive(record, read, {});
+  EXPECT_EQ(read.bodies.motion, std::vector<Motion>{Motion::Dynamic});
+  EXPECT_EQ(read.bodies.owner, std::vector<OwnerId>{kNoOwner});
   const auto* images = dynamic_cast<const ImageDrive*>(back.get());
   ASSERT_NE(images, nullptr);
   EXPECT_EQ(images->control().drive_force, drive.control().drive_force);

@@ -25,8 +25,8 @@ struct OneSphereWall {
 OneSphereWall wall_sphere(double mass, double force, double velocity) {
   OneSphereWall w;
   w.world.bodies.add_sphere(0, Vec3(0.0, 0.0, 5.0), 1.0, 1.0, /*fixed=*/true);
+  w.world.bodies.set_driven(0, kTopWall);
   w.walls = RoughWalls(
-      {BodyGroup::TopWall},
       SlidingWall{.spheres = {0}, .mass = mass, .drive_force = force, .velocity = velocity},
       CoulombLaw{.mu0 = 1.0, .eta_f = 0.0});
   return w;
@@ -57,7 +57,6 @@ TEST(RoughWalls, DraggedSphereAndWallConserveTheDrivenMomentum) {
   OneSphereWall w = wall_sphere(3.0, 1.0, 0.0);
   w.world.gravity = Vec3(0.0, 0.0, 1.0);
   w.world.bodies.add_sphere(1, Vec3(0.0, 0.0, 3.0), 1.0, 1.0, false);
-  w.walls.groups().push_back(BodyGroup::Particle);
   const double m = w.world.bodies.mass(1), dt = 1e-3;
   TimeStepper s(CoulombLaw{}, SolverSettings{.tolerance = 1e-12}, dt);
   for (int n = 1; n <= 200; ++n) {
@@ -82,7 +81,7 @@ TEST(RoughWalls, ContactsOnTheTopWallObeyTheWallsLaw) {
   EXPECT_EQ(std::get<CoulombLaw>(w.walls.contact_law()).mu0, 1.0);
   w.walls.set_contact_law(CoulombLaw{.mu0 = 0.25, .eta_f = 0.0});
   EXPECT_EQ(std::get<CoulombLaw>(w.walls.contact_law()).mu0, 0.25);
-  EXPECT_TRUE(is_boundary_body(w.walls.body_groups(), 0));
+  EXPECT_TRUE(w.world.bodies.is_driven(0));
 }
 
 }  // namespace

@@ -29,12 +29,13 @@ OneSphereCell one_sphere_cell(double tau, double mass, double velocity) {
   world.box.length = Vec3(kLx, kLy, kLz);
   world.box.periodic = {true, true, false};
   world.bodies.add_sphere(0, Vec3(0.0, 0.0, kLz), 1.0, 1.0, /*fixed=*/true);
+  world.bodies.set_driven(0, kTopWall);
   const DriveSpec spec{.shear_stress = tau, .size = world.box.length};
   SlidingWall top{.spheres = {0},
                   .mass = mass,
                   .drive_force = WallDrive::drive_force(spec),
                   .velocity = velocity};
-  RoughWalls walls({BodyGroup::TopWall}, std::move(top), CoulombLaw{});
+  RoughWalls walls(std::move(top), CoulombLaw{});
   return {std::move(world),
           WallDrive(std::move(walls), {.wall_radius_mean = 0.5, .gap_height = kLz - 1.0})};
 }
@@ -92,7 +93,6 @@ TEST(WallDrive, MeasuresOnItsWallsAndTheCentralHalfOfTheGap) {
   EXPECT_EQ(bulk.z_hi, 0.75 * kLz);
   EXPECT_FALSE(bulk.whole_box);
   EXPECT_TRUE(c.drive.bounded_by_walls());
-  EXPECT_EQ(c.drive.body_groups().size(), 1u);
 }
 
 // Continuation takes the next point's stress; it refuses images or another
@@ -101,12 +101,34 @@ TEST(WallDrive, ContinuesUnderAnotherStressButNotAsAnotherCell) {
   OneSphereCell c = one_sphere_cell(0.3, 2.0, 1.5);
   EXPECT_FALSE(c.drive.adopt({.kind = DriveKind::Images, .size = c.world.box.length}, c.world));
   EXPECT_FALSE(c.drive.adopt({.shear_stress = 0.7, .size = Vec3(kLx, kLy, 9.0)}, c.world));
-  EXPECT_DOUBLE_EQ(c.drive.record().wall.drive_force, 0.3 * kLx * kLy);
+  EXPECT_DOUBLE_EQ(c.drive.record(c.world).wall.drive_force, 0.3 * kLx * kLy);
   ASSERT_TRUE(c.drive.adopt({.shear_stress = 0.7, .size = c.world.box.length}, c.world));
-  const DriveRecord r = c.drive.record();
+  const DriveRecord r = c.drive.record(c.world);
   EXPECT_DOUBLE_EQ(r.wall.drive_force, 0.7 * kLx * kLy);
   EXPECT_EQ(r.wall.mass, 2.0);  // the spec names no mass: kept
   EXPECT_EQ(r.wall.velocity, 1.5);
+}
+
+// The record keeps each body's owner, one byte a body as format 7 keeps its
+// "body groups" (0 particle, 1 bottom wall, 2 top wall); restoring the drive
+// gives the bodies of a checkpoint, read without them, their motion back.
+TEST(WallDrive, ItsRecordKeepsWhichWallOwnsEachBody) {
+  OneSphereCell c = one_sphere_cell(0.3, 2.0, 1.5);
+  c.world.bodies.add_sphere(1, Vec3(0.0, 0.0, 1.0), 1.0, 1.0, /*fixed=*/true);
+  c.world.bodies.set_driven(1, kBottomWall);
+  c.world.bodies.add_sphere(2, Vec3(0.0, 0.0, 3.0), 1.0, 1.0, false);
+  const DriveRecord r = c.drive.record(c.world);
+  EXPECT_EQ(r.owners, (std::vector<OwnerId>{2, 1, 0}));
+  EXPECT_EQ(r.fault(c.world.box, 3), nullptr);
+  EXPECT_STREQ(r.fault(c.world.box, 4), "body groups");
+  World read = c.world;
+  read.bodies.motion.clear();
+  read.bodies.owner.clear();
+  const auto back = restore_drive(r, read, {});
+  ASSERT_NE(dynamic_cast<const WallDrive*>(back.get()), nullptr);
+  EXPECT_EQ(read.bodies.owner, c.world.bodies.owner);
+  EXPECT_EQ(read.bodies.motion,
+            (std::vector<Motion>{Motion::Driven, Motion::Driven, Motion::Dynamic}));
 }
 
 }  // namespace

@@ -131,7 +131,7 @@ TEST_F(SteadyShear, FixedWallDoesNotDrift) {
   const ShearCellState end = load_checkpoint(dir_ / "checkpoint.bin");
   int bottom = 0;
   for (std::size_t i = 0; i < built.bodies.size(); ++i) {
-    if (walls.groups()[i] != BodyGroup::BottomWall) continue;
+    if (built.bodies.owner[i] != kBottomWall) continue;
     EXPECT_EQ(end.world.bodies.position[i], built.bodies.position[i]);
     ++bottom;
   }

@@ -58,7 +58,8 @@ TEST(ParticleStress, TheWallCellsVirialBalancesTheDriveStepByStep) {
     const Tensor3 kinetic = velocity_fluctuation_moment(cell.state().world.bodies, {});
     virial_zx += v[tensor_index(kZ, kX)] + dt * kinetic[tensor_index(kZ, kX)];
     virial_zz += v[tensor_index(kZ, kZ)] + dt * kinetic[tensor_index(kZ, kZ)];
-    top_impulse_z += cell.state().drive->wall_forces(cell.contacts(), dt).top[kZ] * dt;
+    top_impulse_z +=
+        cell.state().drive->wall_forces(cell.state().world, cell.contacts(), dt).top[kZ] * dt;
     scale += std::abs(v[tensor_index(kZ, kZ)]);
     time += dt;
   }

@@ -71,10 +71,11 @@ TEST(ShearCellBuilder, PacksRequestedPhiWithoutOverlapBetweenWalls) {
   detector.detect(world, 0.0, contacts);
   for (const Contact& c : contacts) EXPECT_GE(c.gap, -kPackingOverlapTolerance * 0.8);
   // Walls: glued spheres centred on z = 0 and z = Lz; the top one slides.
-  ASSERT_EQ(walls.groups().size(), world.bodies.size());
+  ASSERT_EQ(world.bodies.owner.size(), world.bodies.size());
   ASSERT_FALSE(walls.top().spheres.empty());
   for (std::int32_t s : walls.top().spheres) {
-    EXPECT_EQ(walls.groups()[s], BodyGroup::TopWall);
+    EXPECT_EQ(world.bodies.owner[s], kTopWall);
+    EXPECT_TRUE(world.bodies.is_driven(s));
     EXPECT_DOUBLE_EQ(world.bodies.position[s][2], lz);
     EXPECT_EQ(world.bodies.inv_mass[s], 0.0);
   }
@@ -135,7 +136,7 @@ TEST(ShearCellRun, TwoThreadsGiveTheSameBitsAsOne) {
     const World world = build_shear_cell(small_cell({size}), geometry, walls);
     std::vector<Contact> contacts, scratch;
     ContactDetector().detect(world, 0.1, contacts);
-    ASSERT_GE(partition_into_slabs(contacts, world, walls.body_groups(), scratch).count(), 4);
+    ASSERT_GE(partition_into_slabs(contacts, world, scratch).count(), 4);
   }
   const auto one = fresh_dir("threads1");
   const auto two = fresh_dir("threads2");

@@ -23,23 +23,30 @@ Contact between(int i, int j, Regime regime, Regime previous, double s, double v
   return c;
 }
 
+// n dynamic spheres; the last `driven` of them are driven (a boundary's).
+Bodies spheres(int n, int driven = 0) {
+  Bodies b;
+  for (int i = 0; i < n; ++i) b.add_sphere(i, Vec3(0.0, 0.0, 2.0 * i), 1.0, 1.0, i >= n - driven);
+  for (int i = n - driven; i < n; ++i) b.set_driven(static_cast<std::size_t>(i), 1);
+  return b;
+}
+
 TEST(ContactCounts, CountParticleContactsByRegime) {
-  // Bodies 0-3 particles, 4 a wall sphere.
-  std::vector<BodyGroup> group(4, BodyGroup::Particle);
-  group.push_back(BodyGroup::BottomWall);
+  // Bodies 0-3 dynamic, 4 driven (a wall sphere).
+  const Bodies bodies = spheres(5, 1);
   std::vector<Contact> c = {
       between(0, 1, Regime::Stick, Regime::Stick, 0.0),
       between(1, 2, Regime::BoundaryLubricated, Regime::Open, 1e-6, 2.0),   // impulsive BL
       between(2, 3, Regime::Hydrodynamic, Regime::Hydrodynamic, 0.2, 3.0),  // beyond s_lim
       between(0, 3, Regime::Hydrodynamic, Regime::Open, 1e-3, 1.0),         // impulsive HD
-      between(3, 4, Regime::Stick, Regime::Stick, 0.0),                     // wall: not counted
+      between(3, 4, Regime::Stick, Regime::Stick, 0.0),                     // driven: not counted
   };
   c.push_back(between(0, -1, Regime::Stick, Regime::Stick, 0.0));  // plane: not counted
   Contact open = between(1, 3, Regime::Open, Regime::Open, 0.0);
   open.p_n = 0.0;
   c.push_back(open);
   const double dt = 0.1;
-  const ContactCounts n = count_contacts(group, c, dt, 0.1, nullptr);
+  const ContactCounts n = count_contacts(bodies, c, dt, 0.1, nullptr);
   EXPECT_EQ(n.closed, 4.0);
   EXPECT_EQ(n.boundary, 2.0);
   EXPECT_EQ(n.over_s_lim, 1.0);
@@ -67,8 +74,7 @@ TEST(SommerfeldHistogram, BinsByDecadeWithStickingBelowAndAbove) {
   EXPECT_NEAR(SommerfeldHistogram::bin_lower_edge(SommerfeldHistogram::kBins), 1e2, 1e-12);
   // count_contacts fills it with s, and s = 0 for sticking contacts.
   SommerfeldHistogram g;
-  const std::vector<BodyGroup> group(2, BodyGroup::Particle);
-  count_contacts(group, {between(0, 1, Regime::Stick, Regime::Stick, 0.5)}, 0.1, 0.1, &g);
+  count_contacts(spheres(2), {between(0, 1, Regime::Stick, Regime::Stick, 0.5)}, 0.1, 0.1, &g);
   EXPECT_EQ(g.sticking, 1.0);
 }
 

@@ -18,16 +18,15 @@ World linear_flow(double g, double c, bool with_wall) {
   }
   if (with_wall) w.bodies.add_sphere(99, Vec3(1.0, 1.0, 5.0), 0.2, 1.0, true);
   if (with_wall) w.bodies.velocity.back() = Vec3(1000.0, 0.0, 0.0);
+  if (with_wall) w.bodies.set_driven(w.bodies.size() - 1, 2);
   return w;
 }
 
 TEST(VelocityProfile, LinearFlowGivesItsSlopeExactly) {
   VelocityProfile p(10.0, 10);
   const World w = linear_flow(0.3, -0.7, true);
-  std::vector<BodyGroup> group(20, BodyGroup::Particle);
-  group.push_back(BodyGroup::TopWall);
-  p.add(w, group, 0.5);
-  p.add(w, group, 1.5);  // time weights: the mean per bin is unchanged
+  p.add(w, 0.5);
+  p.add(w, 1.5);  // time weights: the mean per bin is unchanged
   const LinearFit f = p.fit(0.0, 10.0);
   EXPECT_NEAR(f.slope, 0.3, 1e-13);
   EXPECT_NEAR(f.intercept, -0.7, 1e-12);
@@ -45,7 +44,7 @@ TEST(VelocityProfile, DeviationFromALineIsReported) {
   const double v[4] = {0.0, 1.0, 1.0, 0.0};  // a tent: best line is flat at 0.5
   for (int k = 0; k < 4; ++k)
     w.bodies.add_sphere(k, Vec3(0.0, 0.0, 0.5 + k), 0.2, 1.0, false, Vec3(v[k], 0.0, 0.0));
-  p.add(w, {}, 1.0);
+  p.add(w, 1.0);
   const LinearFit f = p.fit(0.0, 4.0);
   EXPECT_NEAR(f.slope, 0.0, 1e-15);
   EXPECT_NEAR(f.intercept, 0.5, 1e-15);

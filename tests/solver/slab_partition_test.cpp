@@ -6,6 +6,7 @@
 
 #include <set>
 
+#include "boundary/wall_owner.hpp"
 #include "detection/contact_detector.hpp"
 #include "drivers/shear_cell_builder.hpp"
 #include "io/config.hpp"
@@ -45,7 +46,7 @@ TEST(SlabPartition, SlabsOfOneColourShareNoMovingSphere) {
   DetectedCell d = detected_cell({"cell.size=[10.0, 6.0, 27.0]", "cell.phi=0.58"});
   const std::size_t total = d.contacts.size();
   std::vector<Contact> scratch;
-  const SlabPartition p = partition_into_slabs(d.contacts, d.world, d.walls.body_groups(), scratch);
+  const SlabPartition p = partition_into_slabs(d.contacts, d.world, scratch);
   ASSERT_EQ(p.count(), kMaxSlabs);  // 27 R holds 8 slabs of more than 2 reach
   ASSERT_EQ(d.contacts.size(), total);
   EXPECT_EQ(p.begin.front(), 0u);
@@ -63,18 +64,17 @@ TEST(SlabPartition, SlabsOfOneColourShareNoMovingSphere) {
 TEST(SlabPartition, WallContactsCloseEachSlabAndTopWallIsInTheLastSlab) {
   DetectedCell d = detected_cell({"cell.size=[10.0, 6.0, 27.0]", "cell.phi=0.58"});
   std::vector<Contact> scratch;
-  const SlabPartition p = partition_into_slabs(d.contacts, d.world, d.walls.body_groups(), scratch);
+  const SlabPartition p = partition_into_slabs(d.contacts, d.world, scratch);
   for (int k = 0; k < p.count(); ++k) {
     for (std::size_t i = p.begin[k]; i < p.begin[k + 1]; ++i) {
       const Contact& c = d.contacts[i];
-      const auto group = d.walls.body_groups();
-      const bool wall =
-          is_boundary_body(group, static_cast<std::size_t>(c.i)) ||
-          (!c.with_plane() && is_boundary_body(group, static_cast<std::size_t>(c.other)));
+      const Bodies& b = d.world.bodies;
+      const bool wall = b.is_driven(static_cast<std::size_t>(c.i)) ||
+                        (!c.with_plane() && b.is_driven(static_cast<std::size_t>(c.other)));
       EXPECT_EQ(wall, i >= p.boundary_begin[k]);
       // The walls' block is solved while even slabs run: the top wall must be odd.
-      const bool top = group[c.i] == BodyGroup::TopWall ||
-                       (!c.with_plane() && group[c.other] == BodyGroup::TopWall);
+      const bool top =
+          b.owner[c.i] == kTopWall || (!c.with_plane() && b.owner[c.other] == kTopWall);
       if (top) {
         EXPECT_EQ(k, p.count() - 1);
       }
@@ -85,12 +85,10 @@ TEST(SlabPartition, WallContactsCloseEachSlabAndTopWallIsInTheLastSlab) {
 TEST(SlabPartition, ThinCellsAndPeriodicAxesKeepOneSlab) {
   DetectedCell thin = detected_cell({"cell.size=[6.0, 5.0, 4.0]", "cell.phi=0.3"});
   std::vector<Contact> scratch;
-  EXPECT_EQ(
-      partition_into_slabs(thin.contacts, thin.world, thin.walls.body_groups(), scratch).count(),
-      1);
+  EXPECT_EQ(partition_into_slabs(thin.contacts, thin.world, scratch).count(), 1);
   DetectedCell d = detected_cell({"cell.size=[10.0, 6.0, 27.0]", "cell.phi=0.58"});
   d.world.box.periodic[2] = true;
-  EXPECT_EQ(partition_into_slabs(d.contacts, d.world, d.walls.body_groups(), scratch).count(), 1);
+  EXPECT_EQ(partition_into_slabs(d.contacts, d.world, scratch).count(), 1);
 }
 
 }  // namespace
