@@ -1,4 +1,4 @@
-// Cost of ONE nonlinear Gauss–Seidel sweep (gauss_seidel_sweep, solver/contact_solver.hpp)
+// Cost of ONE nonlinear Gauss–Seidel sweep (gauss_seidel_pass, solver/contact_solver.hpp)
 // over the contacts of a dense, sheared, random packing of polydisperse spheres.
 //
 // The packing, built once per process by the engine itself (build_packing):
@@ -88,7 +88,7 @@ void BM_GaussSeidelSweep(benchmark::State& state, bool stribeck) {
   Bodies bodies = c.bodies;
   const double start = thread_cpu_ns();
   for (auto _ : state) {
-    SweepChange change = gauss_seidel_sweep(contacts, bodies, c.law, kDt);
+    PassChange change = gauss_seidel_pass(contacts, bodies, c.law, kDt);
     benchmark::DoNotOptimize(change);
   }
   set_counters(state, thread_cpu_ns() - start, contacts.size(), loaded(contacts));

@@ -47,10 +47,14 @@ void add_range(std::span<const Contact> contacts, std::size_t first, const Bodie
 
 }  // namespace
 
-ContactResidual contact_residual(const std::vector<Contact>& contacts, const SlabPartition& slabs,
-                                 const Bodies& bodies, const FrictionLaw& law,
-                                 const FrictionLaw& boundary_law, double dt, int threads,
-                                 double max_push_out) {
+ContactResidual contact_residual(const ContactProblem& problem) {
+  const std::vector<Contact>& contacts = problem.contacts;
+  const SlabPartition& slabs = problem.slabs;
+  const Bodies& bodies = problem.bodies;
+  const FrictionLaw& law = problem.law;
+  const FrictionLaw& boundary_law = problem.boundary_law();
+  const double dt = problem.dt, max_push_out = problem.settings.max_push_out;
+  const int threads = problem.settings.threads;
   // Read-only, so the slabs are independent: summed per slab, then added in
   // slab order, which gives the same bits for any number of threads.
   std::vector<Sums> per_slab(static_cast<std::size_t>(slabs.count()));

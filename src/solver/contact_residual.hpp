@@ -1,6 +1,6 @@
 #pragma once
 // How far the impulses of a step are from solving its contact problem — not
-// how much they changed in the last sweep, which can be small while the
+// how much they changed in the last pass, which can be small while the
 // iteration still crawls (a jammed packing creeps that way).
 //
 // For each contact c, let P_c* = (p_n*, p_t*) be the exact solution of its local
@@ -18,15 +18,12 @@
 // Each is reported as a maximum and an RMS over the contacts, relative to the
 // RMS impulse of the loaded contacts, sqrt(sum |P_c|^2 / n_loaded): a residual
 // of 1e-3 means the worst contact is off by 0.1% of a typical contact impulse.
-// The solver's stopping test is still the relative change of one sweep
+// The solver's stopping test is still the relative change of one pass
 // (solver/contact_solver.hpp); this is what that test buys.
 #include <cstdint>
 #include <vector>
 
-#include "friction/friction_law.hpp"
-#include "solver/local_problem.hpp"
-#include "solver/slab_partition.hpp"
-#include "world/bodies.hpp"
+#include "solver/contact_problem.hpp"
 
 namespace dilatant {
 
@@ -39,14 +36,12 @@ struct ContactResidual {
   double max() const { return normal_max > tangential_max ? normal_max : tangential_max; }
 };
 
-// The residual of the current impulses of `contacts` (ordered by `slabs`: the
-// contacts of each slab's boundary range obey `boundary_law`), reading the
-// bodies' current velocities. Reads only; `threads` share the slabs, with the
+// The residual of the problem's current impulses (the contacts of each
+// slab's boundary range under the boundary's law), reading the bodies'
+// current velocities. Reads only; settings.threads share the slabs, with the
 // same result for any number of them. Overlaps are measured against the
-// push-out the solver was allowed (max_push_out, solver/local_problem.hpp).
-ContactResidual contact_residual(const std::vector<Contact>& contacts, const SlabPartition& slabs,
-                                 const Bodies& bodies, const FrictionLaw& law,
-                                 const FrictionLaw& boundary_law, double dt, int threads = 1,
-                                 double max_push_out = kNoPushOutCap);
+// push-out the solver was allowed (settings.max_push_out,
+// solver/local_problem.hpp).
+ContactResidual contact_residual(const ContactProblem& problem);
 
 }  // namespace dilatant

@@ -9,15 +9,38 @@ namespace dilatant {
 
 namespace {
 
-// One pass over `contacts` (all of them, or only those listed in `only`). A full
-// pass given `loaded` lists the contacts that end it with an impulse: the
-// partial passes that follow visit only those (see "Open contacts" in the header).
+// Which contacts of a range a pass visits (see "Open contacts" in the header):
+// every one, listing in `loaded` (if given) those that end the pass with an
+// impulse; or, if `only` is given, only those it lists.
+struct Visits {
+  const std::vector<std::int32_t>* only = nullptr;
+  std::vector<std::int32_t>* loaded = nullptr;
+};
+
+// What one pass shares over all its slabs: the problem, whether the friction
+// branches are frozen yet, and where each contact's impulse change goes (the
+// acceleration's; null: nowhere).
+struct Pass {
+  const ContactProblem& problem;
+  bool freeze_branches = false;
+  Vec3* changes = nullptr;
+};
+
+// One pass over `contacts`, which start at index `first` of the problem's.
+// The hot loop: the pass's scalars are copied into locals first, as the
+// compiler cannot tell the bodies' doubles it stores to from the problem's it
+// would otherwise read back from memory after every store.
 template <class Law>
-SweepChange sweep(std::span<Contact> contacts, const std::vector<std::int32_t>* only, Bodies& b,
-                  const Law& law, double dt, double relaxation, double max_push_out,
-                  bool freeze_branches, Vec3* changes, std::vector<std::int32_t>* loaded) {
-  SweepChange change;
-  const double inv_dt = 1.0 / dt;
+PassChange relax(std::span<Contact> contacts, std::size_t first, const Law& law, const Pass& pass,
+                 Visits visits) {
+  Bodies& b = pass.problem.bodies;
+  const double dt = pass.problem.dt, inv_dt = 1.0 / dt;
+  const double relaxation = pass.problem.settings.relaxation;
+  const double max_push_out = pass.problem.settings.max_push_out;
+  const bool freeze_branches = pass.freeze_branches;
+  Vec3* const changes = pass.changes != nullptr ? pass.changes + first : nullptr;
+  std::vector<std::int32_t>* const loaded = visits.loaded;
+  PassChange change;
   const auto visit = [&](std::size_t k) {
     Contact& c = contacts[k];
     const LocalAnswer a = solve_local(c, b, law, dt, inv_dt, relaxation,
@@ -42,13 +65,21 @@ SweepChange sweep(std::span<Contact> contacts, const std::vector<std::int32_t>* 
     if (loaded != nullptr && (p_n > 0.0 || a.p_lub != 0.0 || p_t.squaredNorm() > 0.0))
       loaded->push_back(static_cast<std::int32_t>(k));
   };
-  if (only == nullptr) {
+  if (visits.only == nullptr) {
     if (loaded != nullptr) loaded->clear();
     for (std::size_t k = 0; k < contacts.size(); ++k) visit(k);
   } else {
-    for (const std::int32_t k : *only) visit(static_cast<std::size_t>(k));
+    for (const std::int32_t k : *visits.only) visit(static_cast<std::size_t>(k));
   }
   return change;
+}
+
+// The problem's contacts [begin, end) under `law`: the one dispatch on the
+// law's kind per range, so that the per-contact call stays inlined.
+PassChange relax_range(const Pass& pass, std::size_t begin, std::size_t end, const FrictionLaw& law,
+                       Visits visits) {
+  const std::span<Contact> part(pass.problem.contacts.data() + begin, end - begin);
+  return std::visit([&](const auto& l) { return relax(part, begin, l, pass, visits); }, law);
 }
 
 }  // namespace
@@ -59,7 +90,7 @@ void apply_impulses(const std::vector<Contact>& contacts, Bodies& bodies) {
 
 namespace {
 
-// Round-off floor of a sweep's impulse changes (see the header).
+// Round-off floor of a pass's impulse changes (see the header).
 double round_off_floor_squared(const std::vector<Contact>& contacts, const Bodies& bodies) {
   double noise_squared = 0.0;
   for (const Contact& c : contacts) {
@@ -73,24 +104,11 @@ double round_off_floor_squared(const std::vector<Contact>& contacts, const Bodie
   return noise_squared;
 }
 
-SweepChange sweep_range(std::vector<Contact>& contacts, std::size_t begin, std::size_t end,
-                        Bodies& bodies, const FrictionLaw& law, double dt, double relaxation,
-                        double max_push_out, bool freeze, std::vector<Vec3>* changes = nullptr,
-                        const std::vector<std::int32_t>* only = nullptr,
-                        std::vector<std::int32_t>* loaded = nullptr) {
-  std::span<Contact> part(contacts.data() + begin, end - begin);
-  Vec3* out = changes != nullptr ? changes->data() + begin : nullptr;
-  return std::visit(
-      [&](const auto& l) {
-        return sweep(part, only, bodies, l, dt, relaxation, max_push_out, freeze, out, loaded);
-      },
-      law);
-}
-
-// The conjugate-gradient step of the nonsmooth nonlinear CG method (see the
-// header): with r the change of the sweep just done and beta = |r|^2 / |r_prev|^2,
-// move every impulse on along the previous direction by beta d, then
-// d <- beta d + r. beta > 1 (the sweep went uphill) restarts: d <- r.
+// The conjugate-gradient step of the nonsmooth nonlinear CG method (see
+// solver/contact_problem.hpp): with r the change of the pass just done and
+// beta = |r|^2 / |r_prev|^2, move every impulse on along the previous
+// direction by beta d, then d <- beta d + r. beta > 1 (the pass went uphill)
+// restarts: d <- r.
 void conjugate_gradient_step(std::vector<Contact>& contacts, Bodies& bodies,
                              const std::vector<Vec3>& changes, std::vector<Vec3>& direction,
                              double beta) {
@@ -113,9 +131,17 @@ void conjugate_gradient_step(std::vector<Contact>& contacts, Bodies& bodies,
 
 }  // namespace
 
-SweepChange gauss_seidel_sweep(std::vector<Contact>& contacts, Bodies& bodies,
-                               const FrictionLaw& law, double dt) {
-  return sweep_range(contacts, 0, contacts.size(), bodies, law, dt, 1.0, kNoPushOutCap, false);
+PassChange gauss_seidel_pass(std::vector<Contact>& contacts, Bodies& bodies, const FrictionLaw& law,
+                             double dt) {
+  static const SolverSettings plain{};  // relaxation 1, no push-out cap
+  const SlabPartition slabs = SlabPartition::single(contacts.size(), contacts.size());
+  const ContactProblem problem{.contacts = contacts,
+                               .slabs = slabs,
+                               .bodies = bodies,
+                               .law = law,
+                               .dt = dt,
+                               .settings = plain};
+  return relax_range({.problem = problem}, 0, contacts.size(), law, {});
 }
 
 SolveReport solve_contacts(std::vector<Contact>& contacts, Bodies& bodies, const FrictionLaw& law,
@@ -126,64 +152,63 @@ SolveReport solve_contacts(std::vector<Contact>& contacts, Bodies& bodies, const
                          .bodies = bodies,
                          .law = law,
                          .boundary = nullptr,
-                         .dt = dt},
-                        settings);
+                         .dt = dt,
+                         .settings = settings});
 }
 
-SolveReport solve_contacts(const ContactProblem& problem, const SolverSettings& settings) {
+SolveReport solve_contacts(const ContactProblem& problem) {
   std::vector<Contact>& contacts = problem.contacts;
   const SlabPartition& slabs = problem.slabs;
   Bodies& bodies = problem.bodies;
-  const FrictionLaw& law = problem.law;
-  const FrictionLaw& boundary_law =
-      problem.boundary != nullptr ? problem.boundary->contact_law() : law;
+  const SolverSettings& settings = problem.settings;
+  const FrictionLaw& boundary_law = problem.boundary_law();
   Boundary* const boundary = problem.boundary;
-  const double dt = problem.dt;
   SolveReport report;
   if (boundary != nullptr) boundary->solve_block(contacts, bodies);
   if (contacts.empty()) return report;
   report.converged = false;
   const double noise_squared = round_off_floor_squared(contacts, bodies);
   const int n = slabs.count();
-  // Two buffers of per-slab sums, by sweep parity: a thread that has finished a
-  // sweep may already write the next sweep's sums while another still reads.
-  std::vector<SweepChange> partial(2 * static_cast<std::size_t>(n));
-  const double omega = settings.relaxation;
-  const double push_out = settings.max_push_out;
+  // Two buffers of per-slab sums, by pass parity: a thread that has finished a
+  // pass may already write the next pass's sums while another still reads.
+  std::vector<PassChange> partial(2 * static_cast<std::size_t>(n));
   const bool accelerate = settings.acceleration == Acceleration::ConjugateGradient;
   std::vector<Vec3> changes, direction;
   if (accelerate) {
     changes.assign(contacts.size(), Vec3::Zero());
     direction.assign(contacts.size(), Vec3::Zero());
   }
-  double change_before = 0.0;  // |r|^2 of the previous sweep
+  double change_before = 0.0;  // |r|^2 of the previous pass
   // Skipping open contacts (header): per slab, the contacts of its particle and
-  // its boundary range that carried an impulse after the last full sweep.
+  // its boundary range that carried an impulse after the last full pass.
   const bool skip_open = settings.skip_open_contacts && !accelerate;
   std::vector<std::vector<std::int32_t>> loaded(skip_open ? 2 * static_cast<std::size_t>(n) : 0);
-  const auto sweep_slab = [&](int k, int sweep, bool freeze, bool full) {
+  const auto relax_slab = [&](int k, int pass_index, bool freeze, bool full) {
     const auto ks = static_cast<std::size_t>(k);
-    std::vector<Vec3>* out = accelerate ? &changes : nullptr;
+    const Pass pass{.problem = problem,
+                    .freeze_branches = freeze,
+                    .changes = accelerate ? changes.data() : nullptr};
     std::vector<std::int32_t>* list = skip_open ? &loaded[2 * ks] : nullptr;
     std::vector<std::int32_t>* list_boundary = skip_open ? &loaded[2 * ks + 1] : nullptr;
+    const auto visits = [full](std::vector<std::int32_t>* l) {
+      return full ? Visits{.only = nullptr, .loaded = l} : Visits{.only = l, .loaded = nullptr};
+    };
     const std::size_t mid = slabs.boundary_begin[ks];
-    SweepChange ch = sweep_range(contacts, slabs.begin[ks], mid, bodies, law, dt, omega, push_out,
-                                 freeze, out, full ? nullptr : list, full ? list : nullptr);
-    const SweepChange ch_boundary =
-        sweep_range(contacts, mid, slabs.begin[ks + 1], bodies, boundary_law, dt, omega, push_out,
-                    freeze, out, full ? nullptr : list_boundary, full ? list_boundary : nullptr);
-    const std::size_t visits =
+    const PassChange ch = relax_range(pass, slabs.begin[ks], mid, problem.law, visits(list));
+    const PassChange ch_boundary =
+        relax_range(pass, mid, slabs.begin[ks + 1], boundary_law, visits(list_boundary));
+    const std::size_t visited =
         full ? slabs.begin[ks + 1] - slabs.begin[ks] : list->size() + list_boundary->size();
-    partial[static_cast<std::size_t>((sweep & 1) * n + k)] = {
+    partial[static_cast<std::size_t>((pass_index & 1) * n + k)] = {
         ch.change_squared + ch_boundary.change_squared,
-        ch.impulse_squared + ch_boundary.impulse_squared, static_cast<double>(visits)};
+        ch.impulse_squared + ch_boundary.impulse_squared, static_cast<double>(visited)};
   };
-  // Residual of a finished sweep: slab sums added in a fixed order, so every
+  // Residual of a finished pass: slab sums added in a fixed order, so every
   // thread computes the same value whatever the thread count.
-  const auto residual_of = [&](int sweep) {
-    SweepChange ch;
+  const auto residual_of = [&](int pass_index) {
+    PassChange ch;
     for (int k = 0; k < n; ++k) {
-      const SweepChange& p = partial[static_cast<std::size_t>((sweep & 1) * n + k)];
+      const PassChange& p = partial[static_cast<std::size_t>((pass_index & 1) * n + k)];
       ch.change_squared += p.change_squared;
       ch.impulse_squared += p.impulse_squared;
     }
@@ -192,35 +217,36 @@ SolveReport solve_contacts(const ContactProblem& problem, const SolverSettings& 
                                     : (change_squared > 0.0 ? 1.0 : 0.0);
   };
   const int threads = std::max(1, std::min(settings.threads, n / 2));
-  // Two barriers per sweep (the ends of the two `omp for`). The boundary's block
-  // is solved by one thread while the others start the next even half: only the
-  // last slab, which is odd, touches the shear cell's top wall (boundary.hpp).
+  // Two barriers per pass (the ends of the two `omp for`). The boundary's block
+  // is solved by one thread while the others start the next even half: only
+  // the last slab, which is odd, touches the bodies the block writes
+  // (boundary/boundary.hpp, solver/slab_partition.hpp).
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
-    // Whether the next sweep visits every contact: the same decision in every
+    // Whether the next pass visits every contact: the same decision in every
     // thread, as it follows from the residual all of them compute alike.
     bool full = true;
-    for (int sweep = 0; sweep < settings.max_iterations; ++sweep) {
-      const bool freeze = sweep >= settings.freeze_branches_after;
+    for (int pass = 0; pass < settings.max_iterations; ++pass) {
+      const bool freeze = pass >= settings.freeze_branches_after;
 #pragma omp for schedule(static)
-      for (int k = 0; k < n; k += 2) sweep_slab(k, sweep, freeze, full);
+      for (int k = 0; k < n; k += 2) relax_slab(k, pass, freeze, full);
 #pragma omp for schedule(static)
-      for (int k = 1; k < n; k += 2) sweep_slab(k, sweep, freeze, full);
-      const double residual = residual_of(sweep);
+      for (int k = 1; k < n; k += 2) relax_slab(k, pass, freeze, full);
+      const double residual = residual_of(pass);
       const bool met = residual <= settings.tolerance;
 #pragma omp masked
       {
         if (boundary != nullptr) boundary->solve_block(contacts, bodies);
-        report.iterations = sweep + 1;
+        report.iterations = pass + 1;
         report.residual = residual;
         report.converged = met && full;
         for (int k = 0; k < n; ++k)
-          report.contact_visits += partial[static_cast<std::size_t>((sweep & 1) * n + k)].visits;
+          report.contact_visits += partial[static_cast<std::size_t>((pass & 1) * n + k)].visits;
       }
-      // Only a full sweep can end the solve: a partial one has not looked at
+      // Only a full pass can end the solve: a partial one has not looked at
       // the skipped contacts, so meeting the tolerance there calls for a full one.
       if (met && full) break;
-      full = !skip_open || met || (sweep + 1) % kFullSweepEvery == 0;
+      full = !skip_open || met || (pass + 1) % kFullPassEvery == 0;
       if (accelerate) {
         // Serial, and behind barriers: the step touches every contact's bodies.
 #pragma omp barrier
@@ -228,8 +254,8 @@ SolveReport solve_contacts(const ContactProblem& problem, const SolverSettings& 
         {
           double change = 0.0;
           for (int k = 0; k < n; ++k)
-            change += partial[static_cast<std::size_t>((sweep & 1) * n + k)].change_squared;
-          const double beta = sweep > 0 && change_before > 0.0 ? change / change_before : 2.0;
+            change += partial[static_cast<std::size_t>((pass & 1) * n + k)].change_squared;
+          const double beta = pass > 0 && change_before > 0.0 ? change / change_before : 2.0;
           conjugate_gradient_step(contacts, bodies, changes, direction, beta <= 1.0 ? beta : 0.0);
           change_before = change;
           if (boundary != nullptr) boundary->solve_block(contacts, bodies);

@@ -1,7 +1,7 @@
 #pragma once
 // One contact's local problem, the others frozen (derivation in
 // solver/contact_solver.hpp): the exact impulse this contact would take given
-// the current velocities. The Gauss–Seidel sweep applies it contact after
+// the current velocities. A Gauss–Seidel pass applies it contact after
 // contact; the residual (solver/contact_residual.hpp) measures how far each
 // contact's impulse still is from it.
 #include <algorithm>
@@ -35,7 +35,7 @@ inline void apply_impulse(const Contact& c, const Vec3& dp, Bodies& b) {
 }
 
 // The branch imposed on a contact: once branches are frozen, the one it took in
-// the last sweep; before, the HD branch if it slid on it in the previous step.
+// the last pass; before, the HD branch if it slid on it in the previous step.
 inline FrictionBranch imposed_branch(const Contact& c, bool frozen) {
   if (!frozen) {
     return c.previous_regime == Regime::Hydrodynamic ? FrictionBranch::KeepHydrodynamic

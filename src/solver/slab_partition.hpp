@@ -1,12 +1,12 @@
 #pragma once
-// Red-black slabs along z: the order of a Gauss–Seidel sweep that two or more
+// Red-black slabs along z: the order of a Gauss–Seidel pass that two or more
 // threads can share without locks, and with results that do not depend on the
 // number of threads.
 //
 // Each contact belongs to the slab holding its contact point. The slabs are at
 // least twice as wide as the farthest a contact's sphere centre lies from its
 // contact point, so contacts of two slabs that are not neighbours never share
-// a sphere that moves (fixed bodies, inv_mass = 0, are never written). A sweep
+// a sphere that moves (fixed bodies, inv_mass = 0, are never written). A pass
 // therefore solves all even slabs side by side, then all odd ones; inside a
 // slab contacts keep their (i, j) order, those touching a driven body
 // (world/bodies.hpp) after the others: they obey the boundary's law, one

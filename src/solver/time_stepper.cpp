@@ -126,16 +126,16 @@ StepReport TimeStepper::step(World& world, Boundary* boundary) {
   warm_start(b);
   const auto solve_start = Clock::now();
   if (boundary != nullptr) boundary->begin_solve(contacts_, b);
-  report.solve = solve_contacts({.contacts = contacts_,
-                                 .slabs = slabs_,
-                                 .bodies = b,
-                                 .law = law_,
-                                 .boundary = boundary,
-                                 .dt = dt_},
-                                settings_);
-  report.contact_residual = contact_residual(contacts_, slabs_, b, law_,
-                                             boundary != nullptr ? boundary->contact_law() : law_,
-                                             dt_, settings_.threads, settings_.max_push_out);
+  // The one context the solve's stages and the residual are handed.
+  const ContactProblem problem{.contacts = contacts_,
+                               .slabs = slabs_,
+                               .bodies = b,
+                               .law = law_,
+                               .boundary = boundary,
+                               .dt = dt_,
+                               .settings = settings_};
+  report.solve = solve_contacts(problem);
+  report.contact_residual = contact_residual(problem);
   implicit_drag_.restore_masses(b);
   if (!drag_.empty()) report.drag_work = implicit_drag_.work(drag_, dt_, b);
 

@@ -8,7 +8,7 @@
 //                 and pairs within reach of the fluid's squeeze films
 //   3. warm start impulses of contacts that existed last step
 //   4. solve      nonlinear Gauss–Seidel until the impulses converge, the
-//                 boundary's block solved after every sweep; then the residual
+//                 boundary's block solved after every pass; then the residual
 //                 of the contact problem (solver/contact_residual.hpp)
 //   5. store      impulses for the next step's warm start
 //   6. integrate  x += dt v   with the end-of-step velocities (implicit)
@@ -75,7 +75,7 @@ class TimeStepper {
   const FrictionLaw& law() const { return law_; }
   // Contacts of the last step with their impulses and friction regimes.
   const std::vector<Contact>& contacts() const { return contacts_; }
-  // How contacts() is ordered into red-black slabs for the sweep.
+  // How contacts() is ordered into red-black slabs for the passes.
   const SlabPartition& slabs() const { return slabs_; }
 
   // What the contacts of the last step pass to the next (by contact key), for

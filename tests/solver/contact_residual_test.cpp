@@ -19,6 +19,18 @@ namespace {
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr double kDt = 1e-3;
 
+// The residual of `contacts` in `slabs`, every one under `law`.
+ContactResidual residual_of(std::vector<Contact>& contacts, const SlabPartition& slabs,
+                            Bodies& bodies, const FrictionLaw& law, int threads = 1) {
+  const SolverSettings settings{.threads = threads};
+  return contact_residual({.contacts = contacts,
+                           .slabs = slabs,
+                           .bodies = bodies,
+                           .law = law,
+                           .dt = kDt,
+                           .settings = settings});
+}
+
 // A sphere resting on a plane under gravity g = 1, sliding at 0.5 along x
 // with mu0 0.2 (so it keeps sliding through the step).
 struct Resting {
@@ -34,14 +46,14 @@ struct Resting {
     ContactDetector().detect(world, 0.1, contacts);
     solve_contacts(contacts, world.bodies, law, kDt, SolverSettings{.tolerance = 1e-14});
   }
-  ContactResidual residual() const {
-    return contact_residual(contacts, SlabPartition::single(contacts.size(), contacts.size()),
-                            world.bodies, law, law, kDt);
+  ContactResidual residual() {
+    const SlabPartition one = SlabPartition::single(contacts.size(), contacts.size());
+    return residual_of(contacts, one, world.bodies, law);
   }
 };
 
 TEST(ContactResidual, VanishesAtTheSolution) {
-  const Resting r;
+  Resting r;
   ASSERT_EQ(r.contacts.size(), 1u);
   EXPECT_NEAR(r.contacts[0].p_n, r.m * kDt, 8 * kEps * r.m * kDt);  // N = m g
   EXPECT_EQ(r.contacts[0].regime, Regime::BoundaryLubricated);
@@ -106,22 +118,20 @@ TEST(ContactResidual, NamesTheContactThatHoldsTheLargest) {
   two.boundary_begin = {2, 4};
   for (const int threads : {1, 2}) {
     const ContactResidual one_slab =
-        contact_residual(contacts, SlabPartition::single(4, 4), world.bodies, law, law, kDt);
-    const ContactResidual slabs =
-        contact_residual(contacts, two, world.bodies, law, law, kDt, threads);
+        residual_of(contacts, SlabPartition::single(4, 4), world.bodies, law);
+    const ContactResidual slabs = residual_of(contacts, two, world.bodies, law, threads);
     EXPECT_EQ(one_slab.worst_contact, 2);
     EXPECT_EQ(slabs.worst_contact, 2) << threads << " threads";
     EXPECT_EQ(slabs.max(), one_slab.max());
   }
   push(0, 0.5);  // now the first slab's
-  EXPECT_EQ(contact_residual(contacts, two, world.bodies, law, law, kDt, 2).worst_contact, 0);
+  EXPECT_EQ(residual_of(contacts, two, world.bodies, law, 2).worst_contact, 0);
 }
 
 TEST(ContactResidual, NoContactsNoResidual) {
-  const std::vector<Contact> none;
+  std::vector<Contact> none;
   Bodies b;
-  const CoulombLaw law{};
-  const ContactResidual r = contact_residual(none, SlabPartition::single(0, 0), b, law, law, kDt);
+  const ContactResidual r = residual_of(none, SlabPartition::single(0, 0), b, CoulombLaw{});
   EXPECT_EQ(r.max(), 0.0);
   EXPECT_EQ(r.worst_contact, -1);
 }
