@@ -23,10 +23,12 @@
 # target (its gap and pressure float); both measured I_R are in the table.
 #
 # Ours runs in two invocations: WARM strain from the cold start (a linear
-# velocity profile), then `--resume` to END strain. The second invocation's
-# summary.json is the steady-state cost (its wall_time_per_strain_s,
-# steps_per_strain and ns_per_contact_update cover that invocation only); the
-# sweeps per step of the steady part come from timeseries.csv rows past WARM.
+# velocity profile), then END - WARM strain more, continued from the first's
+# final state (`--start-from` its checkpoint, into a second folder; a finished
+# run's run.strain cannot be raised on `--resume`). The second invocation's
+# summary.json and timeseries.csv are the steady state's alone: its cost
+# (wall_time_per_strain_s, steps_per_strain, ns_per_contact_update) and the
+# sweeps per step of its rows.
 # LAMMPS' cost is its timed run of 0.5 strain after 1.5 + 0.2 strain of
 # preparation (the anchor's own split).
 #
@@ -83,16 +85,19 @@ sys.exit(rc)' "$@"
   : > "$results/load.txt"
 
   for point in $points; do
-    out="$scratch/dilatant-$point"
-    common=(--out "$out" --quiet --set solver.threads=1)
+    warm_out="$scratch/dilatant-$point-warm" out="$scratch/dilatant-$point"
+    common=(--quiet --set solver.threads=1)
     note "=== $point dilatant ${config[$point]} 0 -> ${warm[$point]} strain $(date -u +%H:%M:%SZ) load before: $(load)"
-    "$binary" run "${config[$point]}" "${common[@]}" --set "run.strain=${warm[$point]}" \
+    "$binary" run "${config[$point]}" "${common[@]}" --out "$warm_out" \
+      --set "run.strain=${warm[$point]}" \
       --set "run.transient_strain=$(python3 -c "print(${warm[$point]} / 2)")"
-    cp "$out/summary.json" "$results/$point-dilatant-warm.json"
-    note "=== $point dilatant ${warm[$point]} -> ${end[$point]} strain (--resume) $(date -u +%H:%M:%SZ) load before: $(load)"
+    cp "$warm_out/summary.json" "$results/$point-dilatant-warm.json"
+    note "=== $point dilatant ${warm[$point]} -> ${end[$point]} strain (--start-from the warm-up) $(date -u +%H:%M:%SZ) load before: $(load)"
     cpu_time "$results/$point-dilatant-cpu-s.txt" \
-      "$binary" run "${config[$point]}" "${common[@]}" --resume --set "run.strain=${end[$point]}" \
-      --set "run.transient_strain=${warm[$point]}"
+      "$binary" run "${config[$point]}" "${common[@]}" --out "$out" \
+      --start-from "$warm_out/checkpoint.bin" \
+      --set "run.strain=$(python3 -c "print(${end[$point]} - ${warm[$point]})")" \
+      --set run.transient_strain=0
     note "    load after: $(load)"
     cp "$out/summary.json" "$results/$point-dilatant.json"
     cp "$out/config.toml" "$results/$point-dilatant.toml"
@@ -139,18 +144,24 @@ for point in ("hi", "lo"):
         continue
     lam, ours = json.loads(f_l.read_text())["1"], json.loads(f_d.read_text())
     warm = json.loads((folder / f"{point}-dilatant-warm.json").read_text())["strain"]
+    # The steady run continued from the warm-up: its strain starts at 0, and its
+    # rows are all steady. (Runs labelled before 2026-11-27 resumed instead and
+    # counted strain from the cold start: their rows past the warm-up.)
+    continued = ours["strain"] < warm + 1e-6
+    start = 0.0 if continued else warm
     rows = [r for r in csv.DictReader(open(folder / f"{point}-dilatant-timeseries.csv"))
-            if float(r["strain"]) > warm + 1e-6]  # the rows of the resumed run (strain has 8 digits)
+            if float(r["strain"]) > start + 1e-6]
     steps = sum(float(r["steps"]) for r in rows)
     sweeps = sum(float(r["iterations"]) * float(r["steps"]) for r in rows) / steps
     contacts = sum(float(r["contacts"]) * float(r["steps"]) for r in rows) / steps
     capped = sum(float(r["unconverged_steps"]) for r in rows) / steps
     ratio = lam["wall_s_per_strain"] / ours["wall_time_per_strain_s"]
-    cpu = float((folder / f"{point}-dilatant-cpu-s.txt").read_text()) / (ours["strain"] - warm)
+    cpu = float((folder / f"{point}-dilatant-cpu-s.txt").read_text()) / (ours["strain"] - start)
+    end = ours["strain"] + (warm if continued else 0.0)
     print(f"| {point} | LAMMPS, 1 rank | {lam['I_R']:.4f} | {lam['phi_bulk']:.3f} | "
           f"{lam['steps_per_strain']:,.0f} | - | - | - | {lam['contacts_per_frame']:,.0f} | - | "
           f"{lam['wall_s_per_strain']:.1f} | {lam['cpu_s_per_strain']:.1f} | |")
-    print(f"| {point} | dilatant, 1 thread (strain {warm:.2f}-{ours['strain']:.2f}) | "
+    print(f"| {point} | dilatant, 1 thread (strain {warm:.2f}-{end:.2f}) | "
           f"{ours['inertial_number']:.4f} | {ours['phi_bulk']:.3f} | "
           f"{ours['steps_per_strain']:,.0f} | {sweeps:.0f} | "
           f"{ours.get('sweep_equivalents_per_step', sweeps):.0f} | {100 * capped:.1f}% | {contacts:,.0f} | "
