@@ -38,6 +38,28 @@ CLI::App* add_run_command(CLI::App& app, RunCommandArgs& args) {
                   "cell size), under this config, strain counted from 0 (a sweep's continuation)")
       ->check(CLI::ExistingFile)
       ->excludes("--resume");
+  // Step problems on disk, for measuring solver methods (drivers/step_dumps.hpp,
+  // bench/tools/solve_step.cpp). Not config keys: they change no result.
+  auto* dumps = run->add_option("--dump-steps", args.dumps.dir,
+                                "Shear cell: write the states chosen steps start from into this "
+                                "folder (checkpoints, with config.toml and index.csv), each "
+                                "loadable to solve that step's contact problem again");
+  run->add_option("--dump-every", args.dumps.every,
+                  "With --dump-steps: every N-th step from --dump-from-strain on (0: none)")
+      ->check(CLI::NonNegativeNumber)
+      ->needs(dumps);
+  run->add_option("--dump-from-strain", args.dumps.from_strain,
+                  "With --dump-steps: the strain regular dumps start at (default 0)")
+      ->check(CLI::NonNegativeNumber)
+      ->needs(dumps);
+  run->add_option("--dump-max", args.dumps.max_regular,
+                  "With --dump-steps: at most this many regular dumps (default 10)")
+      ->check(CLI::NonNegativeNumber)
+      ->needs(dumps);
+  run->add_option("--dump-unconverged", args.dumps.max_unconverged,
+                  "With --dump-steps: also the first K steps that end unconverged (default 0)")
+      ->check(CLI::NonNegativeNumber)
+      ->needs(dumps);
   return run;
 }
 
@@ -53,10 +75,11 @@ void warn_if_unconverged(const Config& config, long steps, long unconverged) {
 }
 
 int run_cell(const Config& config, const RunOptions& options, bool resume,
-             const std::string& start_from) {
+             const std::string& start_from, const StepDumpSettings& dumps) {
   // SIGINT/SIGTERM: finish the step, write a checkpoint, exit cleanly.
   CellRunOptions cell_options{options, resume, stop_on_interrupt()};
   cell_options.start_from = start_from;
+  cell_options.dumps = dumps;
   const CellOutcome outcome = run_shear_cell(config, cell_options);
   if (outcome.interrupted) {
     std::cerr << fmt::format(
@@ -118,7 +141,13 @@ int execute_run_command(const RunCommandArgs& args) {
         options.out_dir.string()));
   if (args.resume && !config.cell())
     throw InputError("--resume continues a shear-cell run ([cell]); a scene has no checkpoint");
-  if (config.cell()) return run_cell(config, options, args.resume, args.start_from);
+  if (!args.dumps.dir.empty() && !config.cell())
+    throw InputError(args.dumps.dir.string() + ": --dump-steps needs a shear-cell run ([cell])");
+  if (!args.dumps.dir.empty() && !args.dumps.any())
+    throw InputError(args.dumps.dir.string() +
+                     ": --dump-steps chooses no step: give --dump-every N (N > 0) or "
+                     "--dump-unconverged K (K > 0)");
+  if (config.cell()) return run_cell(config, options, args.resume, args.start_from, args.dumps);
   const SceneOutcome outcome = run_scene(config, options);
   warn_if_unconverged(config, outcome.steps, outcome.unconverged_steps);
   if (!args.quiet) {

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "drivers/step_dumps.hpp"
+
 namespace dilatant {
 
 struct RunCommandArgs {
@@ -13,6 +15,7 @@ struct RunCommandArgs {
   bool quiet = false;
   bool resume = false;
   std::string start_from;  // shear cell: start from this checkpoint's state (--start-from)
+  StepDumpSettings dumps;  // shear cell: step problems to write (--dump-*)
 };
 
 CLI::App* add_run_command(CLI::App& app, RunCommandArgs& args);

@@ -15,6 +15,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "drivers/shear_cell_state.hpp"
@@ -54,6 +55,9 @@ class ShearCell {
 
   // Writers: every file atomically (write, then rename).
   void write_checkpoint(const std::filesystem::path& file);
+  // The bytes write_checkpoint would write now, the schedule left as it is
+  // (a step's state kept in memory: drivers/step_dumps.hpp).
+  std::string checkpoint_bytes();
   void write_snapshot(const std::filesystem::path& out_dir);      // snapshots/*.vtp + cell.pvd
   void write_series(const std::filesystem::path& out_dir) const;  // timeseries.csv
   // The end-of-run files: timeseries.csv, velocity_profile.csv,
@@ -68,6 +72,9 @@ class ShearCell {
   const ShearCellState& state() const { return state_; }
   const CellUnits& units() const { return units_; }
   const std::vector<Contact>& contacts() const { return stepper_.contacts(); }
+  // Called after every pass of each step's solve (solver/contact_problem.hpp):
+  // a tool's view of a method's work against its residual; empty: none.
+  void set_pass_observer(PassObserver observer) { stepper_.set_pass_observer(std::move(observer)); }
   // Time spent so far in detection, solve and measurement, and the work done.
   const RunCost& cost() const { return cost_; }
 

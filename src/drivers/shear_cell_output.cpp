@@ -13,6 +13,11 @@
 
 namespace dilatant {
 
+std::string ShearCell::checkpoint_bytes() {
+  state_.contact_memory = stepper_.contact_memory();
+  return dilatant::checkpoint_bytes(state_);
+}
+
 void ShearCell::write_checkpoint(const std::filesystem::path& file) {
   state_.contact_memory = stepper_.contact_memory();
   save_checkpoint(file, state_);

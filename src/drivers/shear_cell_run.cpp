@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <iostream>
+#include <optional>
 
 #include "drivers/shear_cell.hpp"
 #include "io/atomic_file.hpp"
@@ -108,8 +109,12 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
   };
   report_fraction();
   auto last_progress = std::chrono::steady_clock::now();
+  std::optional<StepDumper> dumper;
+  if (options.dumps.any()) dumper.emplace(options.dumps, config);
   while (!cell.done()) {
-    cell.step();
+    if (dumper) dumper->before_step(cell);
+    const StepReport& report = cell.step();
+    if (dumper) dumper->after_step(cell, report);
     if (cell.snapshot_due()) cell.write_snapshot(out);
     report_fraction();
     const bool stop = options.stop_requested != nullptr && options.stop_requested->load();

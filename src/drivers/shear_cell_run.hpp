@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "drivers/run_options.hpp"
+#include "drivers/step_dumps.hpp"
 #include "io/config.hpp"
 
 namespace dilatant {
@@ -35,6 +36,8 @@ struct CellRunOptions {
   // measurement start at zero, and the friction law and drive are this
   // config's. Ignored when resuming from out_dir's own checkpoint.
   std::filesystem::path start_from;
+  // Step problems to write to disk (drivers/step_dumps.hpp); none by default.
+  StepDumpSettings dumps;
   // When set, receives the fraction of run.strain done as the run goes (read
   // by another thread: the progress of a sweep).
   std::atomic<double>* progress = nullptr;

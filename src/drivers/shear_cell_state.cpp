@@ -81,6 +81,10 @@ void visit_state(Archive& a, State& s, DriveRecord& d) {
 }  // namespace
 
 void save_checkpoint(const std::filesystem::path& file, const ShearCellState& state) {
+  write_file_atomically(file, checkpoint_bytes(state));
+}
+
+std::string checkpoint_bytes(const ShearCellState& state) {
   BinaryWriter w;
   w.value(kMagic);
   // visit_state needs mutable access for the reader; the writer only reads.
@@ -98,7 +102,7 @@ void save_checkpoint(const std::filesystem::path& file, const ShearCellState& st
     w.value(m.impulse);
     w.value(static_cast<std::uint8_t>(m.regime));
   }
-  write_file_atomically(file, w.bytes());
+  return w.bytes();
 }
 
 ShearCellState load_checkpoint(const std::filesystem::path& file) {

@@ -41,6 +41,8 @@ struct ShearCellState {
 
 // Writes the state atomically; reads it back (throws on a corrupt file).
 void save_checkpoint(const std::filesystem::path& file, const ShearCellState& state);
+// The bytes save_checkpoint writes.
+std::string checkpoint_bytes(const ShearCellState& state);
 ShearCellState load_checkpoint(const std::filesystem::path& file);
 // The same from a checkpoint's bytes; `file` names it in messages.
 ShearCellState read_checkpoint(std::string bytes, const std::filesystem::path& file);

@@ -10,6 +10,7 @@
 // The problem does not own what it names: the stepper (solver/time_stepper.hpp)
 // owns the contacts, their slab order and the settings, the world the bodies.
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "boundary/boundary.hpp"
@@ -56,6 +57,14 @@ struct SolverSettings {
   static constexpr double kRunRelaxation = 1.3;
 };
 
+struct ContactProblem;
+// Called after every pass of the solve, by one thread while the others wait,
+// with the passes so far and the local solves they took (the contact visits):
+// a method's work against its residual, measured by a tool that solves a
+// step's problem again (bench/solve_step.cpp). Not for runs: it costs a
+// barrier per pass.
+using PassObserver = std::function<void(const ContactProblem&, int passes, double visits)>;
+
 // The contacts ordered in red-black slabs (solver/slab_partition.hpp), the
 // bodies they act on, the law of contacts between dynamic bodies, the
 // boundary, if any, whose law the contacts touching a driven body obey, the
@@ -68,6 +77,7 @@ struct ContactProblem {
   Boundary* boundary = nullptr;
   double dt = 0.0;
   const SolverSettings& settings;
+  const PassObserver* observer = nullptr;  // none in runs
 
   // The law of the contacts in each slab's boundary range: the boundary's, or
   // without one the particles' (a driven body nobody moves is an obstacle).

@@ -243,9 +243,20 @@ SolveReport solve_contacts(const ContactProblem& problem) {
         for (int k = 0; k < n; ++k)
           report.contact_visits += partial[static_cast<std::size_t>((pass & 1) * n + k)].visits;
       }
+      // The observer sees the impulses a pass ends with (after the
+      // acceleration's step, if any); every thread takes the same branch.
+      const auto observe = [&] {
+        if (problem.observer == nullptr) return;
+#pragma omp barrier
+#pragma omp single
+        (*problem.observer)(problem, report.iterations, report.contact_visits);
+      };
       // Only a full pass can end the solve: a partial one has not looked at
       // the skipped contacts, so meeting the tolerance there calls for a full one.
-      if (met && full) break;
+      if (met && full) {
+        observe();
+        break;
+      }
       full = !skip_open || met || (pass + 1) % kFullPassEvery == 0;
       if (accelerate) {
         // Serial, and behind barriers: the step touches every contact's bodies.
@@ -261,6 +272,7 @@ SolveReport solve_contacts(const ContactProblem& problem) {
           if (boundary != nullptr) boundary->solve_block(contacts, bodies);
         }
       }
+      observe();
     }
   }
   return report;

@@ -133,7 +133,8 @@ StepReport TimeStepper::step(World& world, Boundary* boundary) {
                                .law = law_,
                                .boundary = boundary,
                                .dt = dt_,
-                               .settings = settings_};
+                               .settings = settings_,
+                               .observer = pass_observer_ ? &pass_observer_ : nullptr};
   report.solve = solve_contacts(problem);
   report.contact_residual = contact_residual(problem);
   implicit_drag_.restore_masses(b);

@@ -68,6 +68,8 @@ class TimeStepper {
   // it must outlive the stepper's use of it.
   void set_fluid_forces(const FluidForces* fluid) { fluid_ = fluid; }
   void set_dt(double dt) { dt_ = dt; }
+  // Called after every pass of the solve (solver/contact_problem.hpp); empty: none.
+  void set_pass_observer(PassObserver observer) { pass_observer_ = std::move(observer); }
   // The solver's cap on the push-out speed of overlaps (SolverSettings).
   void set_max_push_out(double speed) { settings_.max_push_out = speed; }
   double dt() const { return dt_; }
@@ -101,6 +103,7 @@ class TimeStepper {
   SlabPartition slabs_;
   std::vector<Contact> scratch_;  // reused by partition_into_slabs
   SolverSettings settings_;
+  PassObserver pass_observer_;
   double dt_;
   ContactDetector detector_;
   std::vector<Contact> contacts_;
