@@ -98,6 +98,7 @@ sys.exit(rc)' "$@"
       --start-from "$warm_out/checkpoint.bin" \
       --set "run.strain=$(python3 -c "print(${end[$point]} - ${warm[$point]})")" \
       --set run.transient_strain=0
+    echo "continued from the warm-up" >"$results/$point-dilatant-start.txt"
     note "    load after: $(load)"
     cp "$out/summary.json" "$results/$point-dilatant.json"
     cp "$out/config.toml" "$results/$point-dilatant.toml"
@@ -144,10 +145,11 @@ for point in ("hi", "lo"):
         continue
     lam, ours = json.loads(f_l.read_text())["1"], json.loads(f_d.read_text())
     warm = json.loads((folder / f"{point}-dilatant-warm.json").read_text())["strain"]
-    # The steady run continued from the warm-up: its strain starts at 0, and its
-    # rows are all steady. (Runs labelled before 2026-11-27 resumed instead and
-    # counted strain from the cold start: their rows past the warm-up.)
-    continued = ours["strain"] < warm + 1e-6
+    # The steady run continued from the warm-up (POINT-dilatant-start.txt says
+    # so): its strain starts at 0, and its rows are all steady. Runs labelled
+    # before 2026-11-27 resumed instead and counted strain from the cold start:
+    # their rows past the warm-up.
+    continued = (folder / f"{point}-dilatant-start.txt").exists()
     start = 0.0 if continued else warm
     rows = [r for r in csv.DictReader(open(folder / f"{point}-dilatant-timeseries.csv"))
             if float(r["strain"]) > start + 1e-6]
