@@ -14,6 +14,23 @@
 
 namespace dilatant {
 
+namespace {
+
+// A count or strain of the --dump-* options: a number >= 0, said in one line.
+const CLI::Validator kAtLeastZero(
+    [](std::string& text) -> std::string {
+      try {
+        std::size_t used = 0;
+        const double value = std::stod(text, &used);
+        if (used == text.size() && value >= 0.0) return "";
+      } catch (const std::exception&) {
+      }
+      return "'" + text + "' is not a number >= 0";
+    },
+    ">= 0", "at least zero");
+
+}  // namespace
+
 CLI::App* add_run_command(CLI::App& app, RunCommandArgs& args) {
   CLI::App* run = app.add_subcommand(
       "run",
@@ -46,19 +63,19 @@ CLI::App* add_run_command(CLI::App& app, RunCommandArgs& args) {
                                 "loadable to solve that step's contact problem again");
   run->add_option("--dump-every", args.dumps.every,
                   "With --dump-steps: every N-th step from --dump-from-strain on (0: none)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(kAtLeastZero)
       ->needs(dumps);
   run->add_option("--dump-from-strain", args.dumps.from_strain,
                   "With --dump-steps: the strain regular dumps start at (default 0)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(kAtLeastZero)
       ->needs(dumps);
   run->add_option("--dump-max", args.dumps.max_regular,
                   "With --dump-steps: at most this many regular dumps (default 10)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(kAtLeastZero)
       ->needs(dumps);
   run->add_option("--dump-unconverged", args.dumps.max_unconverged,
                   "With --dump-steps: also the first K steps that end unconverged (default 0)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(kAtLeastZero)
       ->needs(dumps);
   return run;
 }
