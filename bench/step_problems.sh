@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
-# Step problems of the built-in default run solved again under other solver
-# settings (docs/contact-solve-plan.md, "Step problems on disk"): dumps the
+# Step problems of a run (the built-in default cell, or --config) solved again
+# under other solver settings (docs/contact-solve-plan.md, "Step problems on disk"): dumps the
 # states of 3 regular steps past the transient and of the first 3 steps that
 # end at the pass cap (dilatant run --dump-steps), then solves each again with
 # dilatant-solve-step under each setting below and keeps the tables, and runs
 # the same 0.6 strain under each relaxation for the whole-run counts.
 #
-#   bash bench/step_problems.sh [--label L]     (about 3 minutes on 2 cores)
+#   bash bench/step_problems.sh [--label L] [--config FILE --strain S --from S0]
+#     (the default cell: about 2 minutes; the paper's cell, bench/configs/coulomb.toml
+#      with --strain 0.5 --from 0.2: about 6)
 #
 # Writes bench/results/step-problems/LABEL/: index.csv (the dumped steps),
 # solve-*.txt (one table a setting: passes, sweep-equivalents, the residual
@@ -14,11 +16,14 @@
 # dumped states themselves (~170 KB each) stay in a scratch folder.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-label=$(date +%Y%m%d)
+label=$(date +%Y%m%d) config=() strain=0.6 from=0.2
 while (($#)); do
   case "$1" in
     --label) label=$2; shift 2 ;;
-    *) echo "usage: step_problems.sh [--label L]" >&2; exit 2 ;;
+    --config) config=("$2"); shift 2 ;;
+    --strain) strain=$2; shift 2 ;;
+    --from) from=$2; shift 2 ;;
+    *) echo "usage: step_problems.sh [--label L] [--config FILE --strain S --from S0]" >&2; exit 2 ;;
   esac
 done
 bash scripts/build.sh release dilatant dilatant-solve-step >/dev/null
@@ -26,9 +31,10 @@ results="bench/results/step-problems/$label"
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 mkdir -p "$results"
-run=(--quiet --set run.strain=0.6 --set run.transient_strain=0.2)
+run=("${config[@]}" --quiet --set solver.threads=1 --set "run.strain=$strain"
+  --set "run.transient_strain=$from")
 build/dilatant run "${run[@]}" --out "$scratch/run" --dump-steps "$scratch/steps" \
-  --dump-every 300 --dump-from-strain 0.2 --dump-max 4 --dump-unconverged 3 2>/dev/null || true
+  --dump-every 300 --dump-from-strain "$from" --dump-max 4 --dump-unconverged 3 2>/dev/null || true
 cp "$scratch/steps/index.csv" "$results/index.csv"
 declare -A settings=(
   [default]=""
@@ -42,7 +48,7 @@ for name in "${!settings[@]}"; do
     | column -t >"$results/solve-$name.txt"
 done
 {
-  echo "built-in default run, 0.6 strain, per solver.relaxation (one seed)"
+  echo "${config[*]:-built-in default} run, $strain strain, per solver.relaxation (one seed, one thread)"
   for w in 1.3 1.15 1.0; do
     build/dilatant run "${run[@]}" --out "$scratch/w$w" --set "solver.relaxation=$w" 2>/dev/null
     python3 - "$scratch/w$w/summary.json" "$w" <<'PY'
