@@ -7,11 +7,6 @@ namespace dilatant {
 
 namespace {
 
-template <class Field>
-SteadyAverage average(const std::vector<FlowRow>& rows, double from, Field field) {
-  return steady_average(rows, from, field);
-}
-
 // A quantity that exists only with walls: null without them.
 nlohmann::json wall_only(bool walls, double x) {
   return walls ? nlohmann::json(x) : nlohmann::json(nullptr);
@@ -26,12 +21,13 @@ void write_average(nlohmann::json& j, const char* key, const SteadyAverage& a, d
 
 StressRecord StressRecord::of(const std::vector<FlowRow>& rows, double from) {
   StressRecord s;
-  s.shear = average(rows, from, [](const FlowRow& r) { return invariants(r.stress).shear; });
-  s.pressure = average(rows, from, [](const FlowRow& r) { return invariants(r.stress).pressure; });
-  s.n1 = average(rows, from, [](const FlowRow& r) { return invariants(r.stress).n1; });
-  s.n2 = average(rows, from, [](const FlowRow& r) { return invariants(r.stress).n2; });
+  s.shear = steady_average(rows, from, [](const FlowRow& r) { return invariants(r.stress).shear; });
+  s.pressure =
+      steady_average(rows, from, [](const FlowRow& r) { return invariants(r.stress).pressure; });
+  s.n1 = steady_average(rows, from, [](const FlowRow& r) { return invariants(r.stress).n1; });
+  s.n2 = steady_average(rows, from, [](const FlowRow& r) { return invariants(r.stress).n2; });
   for (std::size_t k = 0; k < s.tensor.size(); ++k)
-    s.tensor[k] = average(rows, from, [k](const FlowRow& r) { return r.stress[k]; }).mean;
+    s.tensor[k] = steady_average(rows, from, [k](const FlowRow& r) { return r.stress[k]; }).mean;
   return s;
 }
 
@@ -60,10 +56,11 @@ void StressRecord::write(nlohmann::json& j, double unit) const {
 
 ContactRecord ContactRecord::of(const std::vector<FlowRow>& rows, double from) {
   return {
-      .bl = average(rows, from, [](const FlowRow& r) { return r.frac_bl; }),
-      .over_s_lim = average(rows, from, [](const FlowRow& r) { return r.frac_over_slim; }),
-      .impulsive = average(rows, from, [](const FlowRow& r) { return r.frac_impulsive; }),
-      .bl_persistent = average(rows, from, [](const FlowRow& r) { return r.frac_bl_persistent; })};
+      .bl = steady_average(rows, from, [](const FlowRow& r) { return r.frac_bl; }),
+      .over_s_lim = steady_average(rows, from, [](const FlowRow& r) { return r.frac_over_slim; }),
+      .impulsive = steady_average(rows, from, [](const FlowRow& r) { return r.frac_impulsive; }),
+      .bl_persistent =
+          steady_average(rows, from, [](const FlowRow& r) { return r.frac_bl_persistent; })};
 }
 
 void ContactRecord::write(nlohmann::json& j) const {
@@ -76,15 +73,15 @@ void ContactRecord::write(nlohmann::json& j) const {
 
 EnergyRecord EnergyRecord::of(const std::vector<FlowRow>& rows, double from) {
   EnergyRecord e;
-  e.injected = average(rows, from, [](const FlowRow& r) { return r.power_drive; });
-  e.impacts = average(rows, from, [](const FlowRow& r) { return -r.power_normal; });
-  e.friction_bl = average(rows, from, [](const FlowRow& r) { return -r.power_bl; });
-  e.friction_hd = average(rows, from, [](const FlowRow& r) { return -r.power_hd; });
-  e.lubrication = average(rows, from, [](const FlowRow& r) { return -r.power_lubrication; });
-  e.drag = average(rows, from, [](const FlowRow& r) { return -r.power_drag; });
-  e.kinetic = average(rows, from, [](const FlowRow& r) { return r.power_kinetic; });
-  e.sliding_bl = average(rows, from, [](const FlowRow& r) { return r.sliding_bl; });
-  e.sliding_hd = average(rows, from, [](const FlowRow& r) { return r.sliding_hd; });
+  e.injected = steady_average(rows, from, [](const FlowRow& r) { return r.power_drive; });
+  e.impacts = steady_average(rows, from, [](const FlowRow& r) { return -r.power_normal; });
+  e.friction_bl = steady_average(rows, from, [](const FlowRow& r) { return -r.power_bl; });
+  e.friction_hd = steady_average(rows, from, [](const FlowRow& r) { return -r.power_hd; });
+  e.lubrication = steady_average(rows, from, [](const FlowRow& r) { return -r.power_lubrication; });
+  e.drag = steady_average(rows, from, [](const FlowRow& r) { return -r.power_drag; });
+  e.kinetic = steady_average(rows, from, [](const FlowRow& r) { return r.power_kinetic; });
+  e.sliding_bl = steady_average(rows, from, [](const FlowRow& r) { return r.sliding_bl; });
+  e.sliding_hd = steady_average(rows, from, [](const FlowRow& r) { return r.sliding_hd; });
   return e;
 }
 
@@ -104,9 +101,9 @@ void EnergyRecord::write(nlohmann::json& j) const {
 }
 
 WallForceRecord WallForceRecord::of(const std::vector<FlowRow>& rows, double from, bool walls) {
-  return {.bottom_x = average(rows, from, [](const FlowRow& r) { return r.bottom_force_x; }),
-          .top_z = average(rows, from, [](const FlowRow& r) { return r.top_force_z; }),
-          .bottom_z = average(rows, from, [](const FlowRow& r) { return r.bottom_force_z; }),
+  return {.bottom_x = steady_average(rows, from, [](const FlowRow& r) { return r.bottom_force_x; }),
+          .top_z = steady_average(rows, from, [](const FlowRow& r) { return r.top_force_z; }),
+          .bottom_z = steady_average(rows, from, [](const FlowRow& r) { return r.bottom_force_z; }),
           .walls = walls};
 }
 
