@@ -83,8 +83,6 @@ cat >"$sweep_file" <<'TOML'
 size = [10.0, 6.0, 12.0]
 [fluid]
 lambda = [10.0, 30.0]
-[solver]
-tolerance = 1e-4
 [run]
 strain = 0.4
 transient_strain = 0.1

@@ -29,7 +29,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 # 55 + LeesEdwardsCell 22 + ShearCellRun 7 + ShearCellFluid's short test.
 half_a=(RampToJam SweepRunner Checkpoint ShearCellObject ContactResidual UnconvergedRun
   NumericalFault)
-half_b=(SweepCommand LeesEdwardsCell ShearCellRun ShearCellFluid ContactDetector)
+half_b=(SweepCommand LeesEdwardsCell ShearCellRun ShearCellFluid ContactDetector Stopping)
 suites=("${half_a[@]}" "${half_b[@]}")
 if [[ ${1:-} == --print-suites ]]; then
   printf '%s\n' "${suites[@]}"

@@ -10,7 +10,8 @@
 // Work is counted in sweep-equivalents: local solves over the contacts the
 // step detected. The residual is solver/contact_residual.hpp's, computed after
 // every pass by the observer (not counted as work). One line per step: the
-// passes and work of the solve, the residual it ended with, and the work at
+// passes and work of the solve, the residual it ended with, the loaded
+// contacts' RMS impulse in the residual's unit (P_ref), and the work at
 // which the residual first fell to each target (- if never).
 #include <fmt/format.h>
 
@@ -67,7 +68,7 @@ int run(const std::filesystem::path& dir, const std::vector<std::string>& overri
   if (files.empty()) files = steps_of(dir);
   std::string csv =
       "file,pass,sweep_equivalents,residual_max,residual_normal_rms,residual_tangential_rms\n";
-  std::cout << "file  passes  sweep_equivalents  residual_max  converged";
+  std::cout << "file  passes  sweep_equivalents  residual_max  typical_impulse  converged";
   for (double t : targets) std::cout << fmt::format("  SE_to_{:g}", t);
   std::cout << "\n";
   for (const auto& file : files) {
@@ -79,9 +80,10 @@ int run(const std::filesystem::path& dir, const std::vector<std::string>& overri
       rows.push_back({passes, contacts > 0.0 ? visits / contacts : 0.0, contact_residual(problem)});
     });
     const StepReport report = cell.step();
-    std::string line = fmt::format("{}  {}  {:.1f}  {:.3g}  {}", file.filename().string(),
+    std::string line = fmt::format("{}  {}  {:.1f}  {:.3g}  {:.3g}  {}", file.filename().string(),
                                    report.solve.iterations, rows.empty() ? 0.0 : rows.back().work,
-                                   report.contact_residual.max(), report.solve.converged);
+                                   report.contact_residual.max(),
+                                   report.contact_residual.typical_impulse, report.solve.converged);
     for (double t : targets) {
       std::string reached = "-";
       for (const PassRow& r : rows)

@@ -27,7 +27,6 @@ def cell(small):
                 "run": {"strain": 0.2, "transient_strain": 0.1, "snapshot_interval": 0.0}}
     return {"cell": {"size": [12.0, 8.0, 14.0], "phi": 0.58},
             "friction": {"mu0": 0.1},
-            "solver": {"tolerance": 1e-4},
             "run": {"strain": 4.0, "transient_strain": 2.0, "snapshot_interval": 0.0}}
 
 

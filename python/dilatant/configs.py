@@ -8,6 +8,7 @@ text's "<text>".
 import json
 import os
 import re
+import warnings
 from pathlib import Path
 
 from . import _core
@@ -78,7 +79,18 @@ def load_config(config=None, overrides=None):
     """The validated configuration (dilatant.Config) of a dict, TOML text or a
     path; None is the built-in default cell (`dilatant run` without CONFIG).
     `overrides` work as `--set`: ["friction.mu0=0.3"] or {"friction.mu0": 0.3}.
-    Raises ConfigError with the CLI's message."""
+    Raises ConfigError with the CLI's message; each of the config's notes (an
+    older resolved config.toml keeps the meaning its keys had) is issued as a
+    UserWarning, as the CLI prints it."""
+    loaded = _load(config, overrides)
+    if loaded is config:  # already loaded, its notes already issued
+        return loaded
+    for note in loaded.notes:
+        warnings.warn(note, UserWarning, stacklevel=2)
+    return loaded
+
+
+def _load(config, overrides):
     sets = override_list(overrides)
     if isinstance(config, _core.Config):
         if sets:

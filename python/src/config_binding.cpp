@@ -32,6 +32,10 @@ void bind_config(py::module_& m) {
           "source", [](const Config& c) { return c.source; },
           "The name used in messages: the file, '<dict>' or '<text>'")
       .def_property_readonly("mode", &mode_name, "'cell', 'scene' or 'sediment'")
+      .def_property_readonly(
+          "notes", [](const Config& c) { return c.notes; },
+          "Lines to read before the run (an older resolved config loaded with the meaning its "
+          "keys had); dilatant.load_config() issues each as a UserWarning")
       .def(
           "to_dict", [](const Config& c) { return table_to_dict(to_toml(c)); },
           "Every key, defaults filled in, as nested dicts (the resolved config.toml)")

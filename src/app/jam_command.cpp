@@ -28,10 +28,9 @@ CLI::App* add_jam_command(CLI::App& app, JamCommandArgs& args) {
   return jam;
 }
 
-// The built-in [sediment]: every default, and the solver tolerance the
-// sedimentation tests ran at (tests/drivers/sediment_test.cpp); at the engine's
-// default, 1e-6, most steps of a resting pile end at solver.max_iterations.
-constexpr const char* kBuiltInSediment = "[sediment]\n[solver]\ntolerance = 1e-4\n";
+// The built-in [sediment]: every default (the solver's residual in units of a
+// grain's weight impulse, drivers/model_setup.hpp weight_impulse()).
+constexpr const char* kBuiltInSediment = "[sediment]\n";
 
 int execute_jam_command(const JamCommandArgs& args) {
   const Config config = args.config.empty()

@@ -109,7 +109,8 @@ int run_cell(const Config& config, const RunOptions& options, bool resume,
   if (outcome.unconverged_steps > 0 && outcome.contact_residual_step >= 0) {
     const bool plane = outcome.contact_residual_body_j < 0;
     std::cerr << fmt::format(
-        "dilatant: warning: the largest contact residual, {:.3g} of a typical impulse, was at "
+        "dilatant: warning: the largest contact residual, {:.3g} of the load's impulse "
+        "tau (2R)^2 dt, was at "
         "step {} between body {} and {} {} (summary.json: contact_residual_max_step, "
         "contact_residual_max_bodies)\n",
         outcome.contact_residual_max, outcome.contact_residual_step,
@@ -140,6 +141,8 @@ int execute_run_command(const RunCommandArgs& args) {
                                             : load_config(args.config, args.overrides);
   if (config.sediment() != nullptr)
     throw InputError(config.source + ": a [sediment] config is run by dilatant jam");
+  if (!args.quiet)
+    for (const std::string& note : config.notes) std::cerr << note << "\n";
   RunOptions options;
   options.quiet = args.quiet;
   if (!args.start_from.empty() && !config.cell())

@@ -1,6 +1,7 @@
 #include "drivers/cell_time_step.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace dilatant {
 
@@ -28,6 +29,15 @@ TimeStepChoice choose_time_step(const World& world, const Drive& drive,
   const double dt_drive = drive.time_step_bound(world, c * r_min);
   const double dt_speed = v_max > 0.0 ? c * r_min / v_max : dt_drive;
   return {std::min(dt_drive, dt_speed), dt_drive <= dt_speed, dt_drive, c * r_min / dt_drive};
+}
+
+double reference_stress(const CellConfig& cell, double density, double eta_f,
+                        const std::vector<FlowRow>& rows) {
+  if (cell.control != ShearControl::Rate) return cell.shear_stress;
+  const double gamma_dot = cell.shear_rate, diameter = 2.0 * cell.radius_max;
+  const double bagnold = density * diameter * diameter * gamma_dot * gamma_dot;
+  const double measured = rows.empty() ? 0.0 : std::abs(invariants(rows.back().stress).shear);
+  return std::max({measured, bagnold, eta_f * gamma_dot});
 }
 
 }  // namespace dilatant

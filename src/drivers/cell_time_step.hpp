@@ -2,8 +2,11 @@
 // The shear cell's time step, chosen before each step (solver.dt = 0), and the
 // fastest push-out of an overlap that goes with it (docs/model.md "Overlap
 // push-out").
+#include <vector>
+
 #include "boundary/drive.hpp"
 #include "io/config.hpp"
+#include "measure/flow_series.hpp"
 #include "solver/local_problem.hpp"
 #include "world/world.hpp"
 
@@ -21,5 +24,16 @@ struct TimeStepChoice {
 // solver.dt if set; else no body may move more than c = solver.max_displacement
 // times r_min in one step, neither at its current speed nor under the drive.
 TimeStepChoice choose_time_step(const World& world, const Drive& drive, const SolverConfig& solver);
+
+// The stress whose impulse on a particle's cross-section in one step,
+// sigma_ref (2 R_max)^2 dt, is the unit of the solver's residual
+// (SolverSettings::reference_impulse; docs/model.md "Convergence criterion"):
+// the applied tau under stress control. Rate control applies none: there it is
+// the last output row's measured |sigma_zx|, but at least the Bagnold stress
+// rho_p (2 R_max gamma_dot)^2 of the imposed rate and the fluid's viscous
+// stress eta_f gamma_dot (the first row, and a flow that has gone slack). The
+// rows are in the checkpoint, so a resumed run takes the same unit.
+double reference_stress(const CellConfig& cell, double density, double eta_f,
+                        const std::vector<FlowRow>& rows);
 
 }  // namespace dilatant

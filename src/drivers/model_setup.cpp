@@ -35,13 +35,21 @@ std::unique_ptr<SuspendingFluid> make_fluid(const FluidConfig& f, double eta_f) 
 
 SolverSettings make_solver_settings(const SolverConfig& s) {
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  return SolverSettings{.tolerance = s.tolerance,
+  return SolverSettings{.convergence = s.convergence,
+                        .tolerance = s.tolerance,
                         .max_iterations = s.max_iterations,
                         .freeze_branches_after = s.freeze_branches_after,
                         .threads = s.threads > 0 ? s.threads : cores,
                         .relaxation = s.relaxation,
                         .acceleration = s.acceleration,
                         .skip_open_contacts = s.skip_open_contacts};
+}
+
+double weight_impulse(const World& world, double dt) {
+  double heaviest = 0.0;
+  for (std::size_t i = 0; i < world.bodies.size(); ++i)
+    heaviest = std::max(heaviest, world.bodies.mass(i));
+  return heaviest * world.gravity.norm() * dt;
 }
 
 }  // namespace dilatant

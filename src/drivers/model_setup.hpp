@@ -6,6 +6,7 @@
 #include "friction/friction_law.hpp"
 #include "io/config.hpp"
 #include "solver/contact_solver.hpp"
+#include "world/world.hpp"
 
 namespace dilatant {
 
@@ -13,6 +14,11 @@ namespace dilatant {
 // derives it from lambda.
 FrictionLaw make_friction_law(const FrictionConfig& friction, double eta_f);
 SolverSettings make_solver_settings(const SolverConfig& solver);
+// The residual's unit in a world under gravity (SolverSettings::reference_impulse;
+// docs/model.md "Convergence criterion"): the heaviest free body's weight
+// times dt, the impulse that gravity puts on one grain in one step. 0 without
+// gravity: the solver then measures against the loaded contacts' RMS impulse.
+double weight_impulse(const World& world, double dt);
 // The fluid forces of [fluid] with viscosity eta_f (code units); null when
 // neither drag nor lubrication is on (the literal model). Held by pointer: the
 // stepper keeps its address, which must not move with the driver.

@@ -48,6 +48,7 @@ Scene::Scene(Config config)
                make_solver_settings(config_.solver), scene_dt(config_, world_)),
       fluid_(make_fluid(config_.fluid, config_.fluid.eta_f)) {
   stepper_.set_fluid_forces(fluid_.get());  // a fluid at rest (ShearFlow's default)
+  stepper_.set_reference_impulse(weight_impulse(world_, stepper_.dt()));
   total_steps_ = static_cast<long>(std::ceil(config_.run.time / stepper_.dt() - 1e-9));
 }
 

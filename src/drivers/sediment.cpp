@@ -72,6 +72,7 @@ Sediment::Sediment(const SedimentSettings& settings)
       stepper_(CoulombLaw{.mu0 = settings.mu0, .eta_f = 0.0}, settings.solver,
                settings.dt > 0.0 ? settings.dt : 0.02 * settings.radius_min / terminal_speed_) {
   stepper_.set_fluid_forces(fluid_.get());
+  stepper_.set_reference_impulse(weight_impulse(world_, stepper_.dt()));
   max_time_ = settings.max_time_factor * settings.height / terminal_speed_;
   window_start_height_ = mean_height();
 }

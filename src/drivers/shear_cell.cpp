@@ -121,6 +121,11 @@ const StepReport& ShearCell::step() {
   cost_.steps_dt_by_drive += choice.by_drive ? 1.0 : 0.0;
   stepper_.set_dt(s.dt);
   stepper_.set_max_push_out(choice.max_push_out);
+  const CellConfig& cell = *config_.cell();
+  const double diameter = 2.0 * cell.radius_max;
+  stepper_.set_reference_impulse(
+      reference_stress(cell, config_.density, units_.eta_f, s.measurements.rows) * diameter *
+      diameter * s.dt);
   s.measurements.begin_step(total_kinetic_energy());
   // The drag is relative to the drive's mean flow at the step's start
   // (fluid/stokes_drag.hpp): the profile a steady flow has, so that the fluid

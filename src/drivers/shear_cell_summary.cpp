@@ -116,6 +116,12 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
                profile_consistent && !drifting;
   records.wall_forces.write(j);
   records.solver.write(j, ShearCell::kOverlapTolerance * cell.radius_min);
+  // What the solver stopped on, and the stress its residual's unit is taken
+  // from: the applied one, or under rate control the measured one (at least
+  // the Bagnold and viscous stresses of the imposed rate).
+  j["solver_convergence"] =
+      config.solver.convergence == Convergence::Residual ? "residual" : "change";
+  j["contact_residual_reference"] = rate ? "measured" : "applied";
   // tau Lx Ly on the top wall or the Lees–Edwards boundary; none under rate control.
   j["applied_force_x"] = rate ? nlohmann::json(nullptr)
                               : nlohmann::json(cell.shear_stress * cell.size[0] * cell.size[1]);

@@ -111,7 +111,12 @@ struct FluidConfig {
 
 struct SolverConfig {
   double dt = 0.0;  // 0 => automatic (drivers)
-  double tolerance = SolverSettings{}.tolerance;
+  // Runs stop on the contact problem's residual, in units of the applied
+  // load's impulse (solver/contact_problem.hpp, docs/model.md "Convergence
+  // criterion"); "change", the test before 0.7, is what an older resolved
+  // config keeps.
+  Convergence convergence = Convergence::Residual;
+  double tolerance = 1e-2;
   int max_iterations = SolverSettings{}.max_iterations;
   double max_displacement = 0.02;  // automatic dt (cell): largest move per step / r_min
   int freeze_branches_after = SolverSettings{}.freeze_branches_after;
@@ -138,7 +143,10 @@ struct Config {
   FluidConfig fluid;
   SolverConfig solver;
   RunConfig run;
-  std::string source;    // file name used in messages ("<built-in>" for the default)
+  std::string source;  // file name used in messages ("<built-in>" for the default)
+  // One line each that the user should read before the run (an older resolved
+  // config loaded with the meaning its keys had); run and sweep print them.
+  std::vector<std::string> notes;
   toml::table resolved;  // every key with defaults filled in (= to_toml(*this) on load)
 
   // The mode's section, or null in the other modes.
@@ -194,5 +202,9 @@ std::string toml_value_text(const toml::node& value);
 // to_toml(c) as TOML text, headed by a comment; to be written next to results.
 // parse_config of this text yields a Config with the same values.
 std::string resolved_toml(const Config& c);
+// Its first line, by which a loaded file is known as one (an older one may
+// lack keys whose default has since changed: parse_config adds a note).
+inline constexpr std::string_view kResolvedConfigHeader =
+    "# dilatant: resolved configuration of this run";
 
 }  // namespace dilatant

@@ -179,9 +179,15 @@ std::vector<ConfigKey> make_keys() {
   k.push_back(number("solver", "dt", Any, &solver, &SolverConfig::dt,
                      at_least(0.0, " (0 = automatic)"), "time",
                      "time step; 0 = automatic (docs/model.md)"));
+  k.push_back(choice("solver", "convergence", Any, &solver, &SolverConfig::convergence,
+                     {{"residual", Convergence::Residual}, {"change", Convergence::Change}},
+                     "residual: sweeps stop when no contact is further from its local answer "
+                     "than tolerance x the load's impulse, tau (2R)^2 dt in a cell, weight x dt "
+                     "in a scene; change: relative impulse change of one sweep (before 0.7)"));
   k.push_back(number("solver", "tolerance", Any, &solver, &SolverConfig::tolerance, open(0.0, 1.0),
                      "",
-                     "Gauss-Seidel stops when the relative change of all impulses is below it"));
+                     "of solver.convergence: largest residual per contact (default 1e-2), or "
+                     "relative change"));
   k.push_back(integer("solver", "max_iterations", Any, &solver, &SolverConfig::max_iterations, 1,
                       std::numeric_limits<int>::max(), "must be >= 1", ">= 1",
                       "Gauss-Seidel sweeps per step at most"));

@@ -209,7 +209,24 @@ Config parse_config(std::string_view toml_text, std::string source,
                                  e.source().begin.column, e.description()));
   }
   config_detail::apply_overrides(root, overrides);
-  return build(root, std::move(source), base_dir);
+  // A resolved config written before solver.convergence existed (0.6 and
+  // older) lists solver.tolerance as a relative change: it keeps that meaning,
+  // said in one line, so that an old run's folder runs as it did.
+  std::string note;
+  if (toml_text.starts_with(kResolvedConfigHeader)) {
+    toml::table* solver = root.get_as<toml::table>("solver");
+    if (solver != nullptr && solver->contains("tolerance") && !solver->contains("convergence")) {
+      solver->insert("convergence", "change");
+      note = fmt::format(
+          "note: {} was written before solver.convergence; its solver.tolerance = {} keeps its "
+          "old meaning (relative change of one sweep); set solver.convergence = \"residual\" "
+          "for the load-scaled residual (docs/model.md \"Convergence criterion\")",
+          source, config_detail::show(*solver->get("tolerance")));
+    }
+  }
+  Config c = build(root, std::move(source), base_dir);
+  if (!note.empty()) c.notes.push_back(std::move(note));
+  return c;
 }
 
 Config config_from_table(const toml::table& root, std::string source,
@@ -233,13 +250,12 @@ Config load_config(const std::filesystem::path& file, const std::vector<std::str
 // averaged. Shorter cold starts are not steady or not linear: 4 strain (avg.
 // 1.5-4) and 8 (avg. 4-8) left the central shear rate 11-18% below the no-slip
 // value; lambda 50 with 8 strain 14% (docs/paper-reproduction.md "The Newtonian
-// branch", item 3). Its solver tolerance, 1e-4, is the one shown converged by
-// tests/drivers/shear_cell_convergence_test.cpp.
+// branch", item 3). Its solver tolerance is the default residual's, shown
+// converged by tests/drivers/shear_cell_convergence_test.cpp.
 Config default_cell_config(const std::vector<std::string>& overrides) {
   constexpr const char* kBuiltIn =
       "[cell]\n"
       "[fluid]\nlambda = 100.0\n"
-      "[solver]\ntolerance = 1e-4\n"
       "[run]\nstrain = 12.0\ntransient_strain = 6.0\n";
   return parse_config(kBuiltIn, "<built-in>", std::filesystem::current_path(), overrides);
 }

@@ -52,9 +52,9 @@ std::string resolved_toml(const Config& c) {
   // order is that of the documentation.
   const auto t = to_toml(c);
   std::string out = fmt::format(
-      "# dilatant: resolved configuration of this run (every key, defaults filled in;\n"
+      "{} (every key, defaults filled in;\n"
       "# keys and units: `dilatant run --help`). Loaded from: {}\n",
-      c.source);
+      kResolvedConfigHeader, c.source);
   for (std::string_view section : config_sections()) {
     const auto* table = t.get_as<toml::table>(section);
     if (table == nullptr) continue;

@@ -155,9 +155,9 @@ void SolverRecord::write(nlohmann::json& j, double overlap_tolerance) const {
   j["mean_iterations"] = steps > 0.0 ? iterations / steps : 0.0;
   j["frac_steps_unconverged"] = steps > 0.0 ? unconverged / steps : 0.0;
   // The residual of the contact problem itself: the worst contact of any step,
-  // and the step-mean of the RMS over contacts, relative to the typical
-  // contact impulse; where the worst was, so that a run that did not converge
-  // says where.
+  // and the step-mean of the RMS over contacts, in units of the load's impulse
+  // sigma_ref (2 R_max)^2 dt (drivers/cell_time_step.hpp reference_stress());
+  // where the worst was, so that a run that did not converge says where.
   j["contact_residual_max"] = residual_max;
   j["contact_residual_rms"] = steps > 0.0 ? residual_rms_sum / steps : 0.0;
   if (worst_residual != nullptr) {

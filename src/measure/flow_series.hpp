@@ -29,7 +29,7 @@ struct FlowRow {
   double mean_iterations = 0.0, max_residual = 0.0, mean_dt = 0.0, steps = 0.0;
   double unconverged_steps = 0.0;
   // Residual of the contact problem at the end of the steps (solver/contact_residual.hpp),
-  // relative to the typical contact impulse: the largest of any contact in any
+  // in units of the load's impulse tau (2R)^2 dt: the largest of any contact in any
   // step of the interval, and the step-mean of the RMS over contacts.
   double contact_residual_max = 0.0, contact_residual_rms = 0.0;
   // Where the largest was: step and the contact's bodies (ids, as max_overlap's).

@@ -15,12 +15,20 @@
 //   tangential  |p_t* - p_t|: the violation of the cone (stick) or of the
 //               friction law (|P_t| = mu(s) p_n opposite the slip).
 //
-// Each is reported as a maximum and an RMS over the contacts, relative to the
-// RMS impulse of the loaded contacts, sqrt(sum |P_c|^2 / n_loaded): a residual
-// of 1e-3 means the worst contact is off by 0.1% of a typical contact impulse.
-// The solver's stopping test is still the relative change of one pass
-// (solver/contact_solver.hpp); this is what that test buys.
+// Each is reported as a maximum and an RMS over the contacts, in units of the
+// problem's reference impulse P_ref (SolverSettings::reference_impulse: in the
+// shear cell tau (2 R_max)^2 dt, the impulse the applied stress puts on a
+// particle's cross-section in one step), or without one relative to the RMS
+// impulse of the loaded contacts, sqrt(sum |P_c|^2 / n_loaded). A residual of
+// 1e-2 then means the worst contact is off by 1% of P_ref. Changes below the
+// round-off of recomputing an impulse from the velocities (16 eps |v|_c / w_n,
+// as the relative change's floor in solver/contact_solver.hpp) do not count.
+//
+// With SolverSettings::convergence = Residual this is the solver's stopping
+// test (solver/contact_solver.cpp evaluates it slab by slab inside its own
+// parallel region); with Change it shows what that test bought.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "solver/contact_problem.hpp"
@@ -33,6 +41,9 @@ struct ContactResidual {
   // The contact that holds max() (its index in the contacts), so that a step
   // that did not converge names where (-1: no contacts, or none off at all).
   std::int32_t worst_contact = -1;
+  // The RMS impulse of the loaded contacts in the same unit (1 without a
+  // reference impulse): what "a typical impulse" is against P_ref.
+  double typical_impulse = 0.0;
   double max() const { return normal_max > tangential_max ? normal_max : tangential_max; }
 };
 
@@ -43,5 +54,20 @@ struct ContactResidual {
 // push-out the solver was allowed (settings.max_push_out,
 // solver/local_problem.hpp).
 ContactResidual contact_residual(const ContactProblem& problem);
+
+// The same in two stages, for a caller that already runs threads: the sums of
+// one slab (any thread), then the residual of all slabs' sums, added in slab
+// order (the same bits whatever thread computed which slab).
+struct ResidualSums {
+  double normal_max = 0.0, normal_squared = 0.0;
+  double tangential_max = 0.0, tangential_squared = 0.0;
+  double impulse_squared = 0.0;   // of the loaded contacts ...
+  double loaded = 0.0;            // ... and their number
+  double worst = 0.0;             // max(normal_max, tangential_max) ...
+  std::int32_t worst_index = -1;  // ... at this contact
+};
+ResidualSums slab_residual(const ContactProblem& problem, int slab);
+ContactResidual combine_residual(const ContactProblem& problem,
+                                 std::span<const ResidualSums> per_slab);
 
 }  // namespace dilatant

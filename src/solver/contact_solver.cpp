@@ -60,10 +60,14 @@ PassChange relax(std::span<Contact> contacts, std::size_t first, const Law& law,
     c.sliding_speed = t.sliding_speed;
     c.sommerfeld = t.sommerfeld;
     c.regime = t.regime;
-    change.change_squared += dp.squaredNorm();
+    const double dp_squared = dp.squaredNorm();
+    change.change_squared += dp_squared;
+    change.max_change_squared = std::max(change.max_change_squared, dp_squared);
     change.impulse_squared += normal * normal + p_t.squaredNorm();
-    if (loaded != nullptr && (p_n > 0.0 || a.p_lub != 0.0 || p_t.squaredNorm() > 0.0))
-      loaded->push_back(static_cast<std::int32_t>(k));
+    if (p_n > 0.0 || a.p_lub != 0.0 || p_t.squaredNorm() > 0.0) {
+      change.loaded += 1.0;
+      if (loaded != nullptr) loaded->push_back(static_cast<std::int32_t>(k));
+    }
   };
   if (visits.only == nullptr) {
     if (loaded != nullptr) loaded->clear();
@@ -90,18 +94,19 @@ void apply_impulses(const std::vector<Contact>& contacts, Bodies& bodies) {
 
 namespace {
 
-// Round-off floor of a pass's impulse changes (see the header).
-double round_off_floor_squared(const std::vector<Contact>& contacts, const Bodies& bodies) {
-  double noise_squared = 0.0;
+// Round-off floor of a pass's impulse changes (see the header): its sum of
+// squares over the contacts, and its largest.
+struct RoundOff {
+  double squared = 0.0, max = 0.0;
+};
+RoundOff round_off_floor(const std::vector<Contact>& contacts, const Bodies& bodies) {
+  RoundOff floor;
   for (const Contact& c : contacts) {
-    double speed = bodies.velocity[c.i].norm() + c.arm_i * bodies.angular_velocity[c.i].norm();
-    if (!c.with_plane()) {
-      speed += bodies.velocity[c.other].norm() + c.arm_j * bodies.angular_velocity[c.other].norm();
-    }
-    const double noise = 16.0 * std::numeric_limits<double>::epsilon() * speed / c.w_n;
-    noise_squared += noise * noise;
+    const double noise = round_off_impulse(c, bodies);
+    floor.squared += noise * noise;
+    floor.max = std::max(floor.max, noise);
   }
-  return noise_squared;
+  return floor;
 }
 
 // The conjugate-gradient step of the nonsmooth nonlinear CG method (see
@@ -167,11 +172,13 @@ SolveReport solve_contacts(const ContactProblem& problem) {
   if (boundary != nullptr) boundary->solve_block(contacts, bodies);
   if (contacts.empty()) return report;
   report.converged = false;
-  const double noise_squared = round_off_floor_squared(contacts, bodies);
+  const RoundOff round_off = round_off_floor(contacts, bodies);
   const int n = slabs.count();
   // Two buffers of per-slab sums, by pass parity: a thread that has finished a
   // pass may already write the next pass's sums while another still reads.
   std::vector<PassChange> partial(2 * static_cast<std::size_t>(n));
+  const bool by_residual = settings.convergence == Convergence::Residual;
+  std::vector<ResidualSums> residual_sums(by_residual ? static_cast<std::size_t>(n) : 0);
   const bool accelerate = settings.acceleration == Acceleration::ConjugateGradient;
   std::vector<Vec3> changes, direction;
   if (accelerate) {
@@ -200,21 +207,40 @@ SolveReport solve_contacts(const ContactProblem& problem) {
     const std::size_t visited =
         full ? slabs.begin[ks + 1] - slabs.begin[ks] : list->size() + list_boundary->size();
     partial[static_cast<std::size_t>((pass_index & 1) * n + k)] = {
-        ch.change_squared + ch_boundary.change_squared,
-        ch.impulse_squared + ch_boundary.impulse_squared, static_cast<double>(visited)};
+        .change_squared = ch.change_squared + ch_boundary.change_squared,
+        .impulse_squared = ch.impulse_squared + ch_boundary.impulse_squared,
+        .visits = static_cast<double>(visited),
+        .max_change_squared = std::max(ch.max_change_squared, ch_boundary.max_change_squared),
+        .loaded = ch.loaded + ch_boundary.loaded};
   };
-  // Residual of a finished pass: slab sums added in a fixed order, so every
-  // thread computes the same value whatever the thread count.
-  const auto residual_of = [&](int pass_index) {
+  // A finished pass's sums, added in a fixed slab order, so that every thread
+  // computes the same values whatever the thread count.
+  const auto pass_sums = [&](int pass_index) {
     PassChange ch;
     for (int k = 0; k < n; ++k) {
       const PassChange& p = partial[static_cast<std::size_t>((pass_index & 1) * n + k)];
       ch.change_squared += p.change_squared;
       ch.impulse_squared += p.impulse_squared;
+      ch.visits += p.visits;
+      ch.max_change_squared = std::max(ch.max_change_squared, p.max_change_squared);
+      ch.loaded += p.loaded;
     }
-    const double change_squared = std::max(0.0, ch.change_squared - noise_squared);
+    return ch;
+  };
+  // Change: the relative change of the pass (the header's formula).
+  const auto relative_change = [&](const PassChange& ch) {
+    const double change_squared = std::max(0.0, ch.change_squared - round_off.squared);
     return ch.impulse_squared > 0.0 ? std::sqrt(change_squared / ch.impulse_squared)
                                     : (change_squared > 0.0 ? 1.0 : 0.0);
+  };
+  // Residual: whether the pass's largest change lets the residual hold (the
+  // header's trigger), in the residual's unit (solver/contact_residual.hpp).
+  const auto triggered = [&](const PassChange& ch) {
+    const double unit = settings.reference_impulse > 0.0
+                            ? settings.reference_impulse
+                            : (ch.loaded > 0.0 ? std::sqrt(ch.impulse_squared / ch.loaded) : 0.0);
+    const double largest = std::sqrt(ch.max_change_squared);
+    return largest <= std::max(kResidualTrigger * settings.tolerance * unit, round_off.max);
   };
   const int threads = std::max(1, std::min(settings.threads, n / 2));
   // Two barriers per pass (the ends of the two `omp for`). The boundary's block
@@ -223,25 +249,53 @@ SolveReport solve_contacts(const ContactProblem& problem) {
   // (boundary/boundary.hpp, solver/slab_partition.hpp).
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
-    // Whether the next pass visits every contact: the same decision in every
-    // thread, as it follows from the residual all of them compute alike.
+    // Every thread keeps these alike, as they follow from sums all of them
+    // compute in the same order: whether the next pass visits every contact,
+    // and under Residual the first pass that may evaluate the residual and the
+    // deferral after a failed evaluation.
     bool full = true;
+    int next_evaluation = 0, deferral = 1;
     for (int pass = 0; pass < settings.max_iterations; ++pass) {
       const bool freeze = pass >= settings.freeze_branches_after;
 #pragma omp for schedule(static)
       for (int k = 0; k < n; k += 2) relax_slab(k, pass, freeze, full);
 #pragma omp for schedule(static)
       for (int k = 1; k < n; k += 2) relax_slab(k, pass, freeze, full);
-      const double residual = residual_of(pass);
-      const bool met = residual <= settings.tolerance;
+      const PassChange sums = pass_sums(pass);
+      const double change = relative_change(sums);
+      // met: the pass passes the cheap test (Change: the test itself).
+      const bool met = by_residual ? triggered(sums) : change <= settings.tolerance;
+      const bool evaluate = by_residual && met && full && pass >= next_evaluation;
 #pragma omp masked
       {
         if (boundary != nullptr) boundary->solve_block(contacts, bodies);
         report.iterations = pass + 1;
-        report.residual = residual;
-        report.converged = met && full;
+        if (!by_residual) report.residual = change;
+        report.converged = !by_residual && met && full;
+        report.contact_visits += sums.visits;
+      }
+      bool converged = !by_residual && met && full;
+      if (evaluate) {
+        // After the boundary's block: the residual of the impulses and
+        // velocities the pass ends with, as the stepper would report them.
+#pragma omp barrier
+#pragma omp for schedule(static)
         for (int k = 0; k < n; ++k)
-          report.contact_visits += partial[static_cast<std::size_t>((pass & 1) * n + k)].visits;
+          residual_sums[static_cast<std::size_t>(k)] = slab_residual(problem, k);
+        const ContactResidual r = combine_residual(problem, residual_sums);
+        converged = r.max() <= settings.tolerance;
+        if (!converged) {
+          next_evaluation = pass + deferral;
+          deferral = std::min(2 * deferral, kLongestDeferral);
+        }
+#pragma omp masked
+        {
+          report.residual = r.max();
+          report.converged = converged;
+          report.final_residual_known = true;
+          report.final_residual = r;
+          report.contact_visits += static_cast<double>(contacts.size());
+        }
       }
       // The observer sees the impulses a pass ends with (after the
       // acceleration's step, if any); every thread takes the same branch.
@@ -253,28 +307,29 @@ SolveReport solve_contacts(const ContactProblem& problem) {
       };
       // Only a full pass can end the solve: a partial one has not looked at
       // the skipped contacts, so meeting the tolerance there calls for a full one.
-      if (met && full) {
+      if (converged) {
         observe();
         break;
       }
-      full = !skip_open || met || (pass + 1) % kFullPassEvery == 0;
+      full = !skip_open || (met && pass + 1 >= next_evaluation) || (pass + 1) % kFullPassEvery == 0;
       if (accelerate) {
         // Serial, and behind barriers: the step touches every contact's bodies.
 #pragma omp barrier
 #pragma omp single
         {
-          double change = 0.0;
-          for (int k = 0; k < n; ++k)
-            change += partial[static_cast<std::size_t>((pass & 1) * n + k)].change_squared;
-          const double beta = pass > 0 && change_before > 0.0 ? change / change_before : 2.0;
+          const double beta =
+              pass > 0 && change_before > 0.0 ? sums.change_squared / change_before : 2.0;
           conjugate_gradient_step(contacts, bodies, changes, direction, beta <= 1.0 ? beta : 0.0);
-          change_before = change;
+          change_before = sums.change_squared;
           if (boundary != nullptr) boundary->solve_block(contacts, bodies);
+          report.final_residual_known = false;  // the step moved the impulses on
         }
       }
       observe();
     }
   }
+  // A residual evaluated before later passes moved the impulses is not theirs.
+  if (report.final_residual_known && !report.converged) report.final_residual_known = false;
   return report;
 }
 

@@ -33,19 +33,40 @@
 // sweep_equivalents; the code says "pass" so that "sweep" names only a
 // parameter sweep, src/sweep/). Velocities always hold v_free + M^-1 H P for
 // the current impulses P, so visiting a contact costs one gather of two
-// bodies, the local solve, and one scatter of the impulse change. Passes repeat
-// until the relative change of the impulse vector,
+// bodies, the local solve, and one scatter of the impulse change.
+//
+// When to stop (SolverSettings::convergence; docs/model.md "Convergence
+// criterion"). Under Residual, the passes repeat until the contact problem's
+// residual (solver/contact_residual.hpp: every contact's distance from the
+// exact answer of its local problem, in units of the reference impulse P_ref
+// the driver sets from the applied load) is at most `tolerance` for every
+// contact. Evaluating it costs about a pass, so it is evaluated only on a full
+// pass in which no contact's impulse changed by more than kResidualTrigger x
+// tolerance x P_ref (the trigger). A pass's change is the residual each
+// contact had when visited, but contacts visited later can undo it: a
+// dumped step of the default cell crept along such a mode for 700 passes,
+// changing a contact by more than 0.01 P_ref every pass at a residual of
+// 0.0084; hence the factor 10 rather than 1. A failed evaluation defers the
+// next by 1, 2, 4, 8, then 16 passes, so that a solve crawling just above
+// the tolerance pays at most one evaluation per 16 passes. The evaluations
+// count as work (one visit per contact).
+//
+// Under Change, the passes repeat until the relative change of the impulse
+// vector,
 //
 //     residual = sqrt( max(0, sum_c |P_c^new - P_c^old|^2 - noise^2) / sum_c |P_c^new|^2 ),
 //
-// drops to `tolerance` (0 when no contact carries load and nothing changed),
-// or `max_iterations` passes have run; then the step is reported unconverged.
+// drops to `tolerance` (0 when no contact carries load and nothing changed).
+// A self-stress locked into a jammed packing inflates sum |P|^2 and can meet
+// this far from the answer (docs/model.md "Overlap push-out"), hence Residual.
+// Under either, after `max_iterations` passes the step is reported unconverged.
 // noise^2 = sum_c (16 eps |v|_c / w_n)^2, |v|_c = |v_i| + r_i |w_i| + |v_j| + r_j |w_j|,
 // is the round-off of recomputing the impulses from velocities of that size:
 // changes below it are not progress. Without it a contact whose load is itself
 // round-off (two spheres moving together, gap -1e-16 pushed out at 1e-13/dt)
 // never meets the relative test and runs all max_iterations passes
-// (tests/validation/head_on_collision_test.cpp).
+// (tests/validation/head_on_collision_test.cpp); the residual discounts it
+// contact by contact.
 // Warm start: impulses of the previous step are applied before the first pass.
 //
 // The stages of one solve (solve_contacts), each handed the one
@@ -57,10 +78,12 @@
 //                    the contacts between dynamic bodies under the law, then
 //                    those touching a driven body under the boundary's law
 //                    (solver/slab_partition.hpp)
-//   residual         of the pass, from the slabs' sums added in slab order
+//   change           of the pass, from the slabs' sums added in slab order
 //   boundary block   by one thread, while the others start the next even slabs
+//   [residual]       under Residual, when the trigger holds on a full pass:
+//                    all slabs side by side, after the boundary block
 //   [acceleration]   the conjugate-gradient step, then the boundary block again
-//   ... until a full pass meets the tolerance, or max_iterations passes.
+//   ... until the test holds on a full pass, or max_iterations passes.
 //
 // Frozen branches. With the Stribeck law the friction jumps from mu0 to
 // mu_HD(s_c) ~ 0.003 at s = s_c. A contact near the jump flips branch from one
@@ -92,26 +115,43 @@
 #include "detection/contact.hpp"
 #include "friction/friction_law.hpp"
 #include "solver/contact_problem.hpp"
+#include "solver/contact_residual.hpp"
 #include "world/bodies.hpp"
 
 namespace dilatant {
 
 struct SolveReport {
-  int iterations = 0;           // passes, full and partial
-  double contact_visits = 0.0;  // local solves over all passes (/contacts: sweep-equivalents)
+  int iterations = 0;  // passes, full and partial
+  // The solve's work: local solves over all passes, plus one per contact for
+  // every residual the stopping test evaluated (/contacts: sweep-equivalents).
+  double contact_visits = 0.0;
+  // The stopping test's value when the solve ended: the relative change of
+  // the last pass (Change), or the last residual evaluated (Residual).
   double residual = 0.0;
   bool converged = true;
+  // Under Residual, the contact residual of the final impulses when the solve
+  // evaluated it there (always when it converged): the stepper reports it
+  // rather than computing it again.
+  bool final_residual_known = false;
+  ContactResidual final_residual;
 };
 
-// Sums accumulated over one pass, from which the residual follows.
+// Sums accumulated over one pass, from which the stopping test follows.
 struct PassChange {
-  double change_squared = 0.0;   // sum |dP|^2
-  double impulse_squared = 0.0;  // sum |P|^2
-  double visits = 0.0;           // contacts visited
+  double change_squared = 0.0;      // sum |dP|^2
+  double impulse_squared = 0.0;     // sum |P|^2
+  double visits = 0.0;              // contacts visited
+  double max_change_squared = 0.0;  // max |dP|^2: the residual's trigger
+  double loaded = 0.0;              // contacts carrying an impulse after their visit
 };
 
 // With skip_open_contacts, every kFullPassEvery-th pass visits all contacts.
 inline constexpr int kFullPassEvery = 8;
+// Under Residual (header, "When to stop"): the largest change of a pass that
+// lets the residual be evaluated, in units of tolerance x P_ref, and the
+// longest deferral after failed evaluations, in passes.
+inline constexpr double kResidualTrigger = 10.0;
+inline constexpr int kLongestDeferral = 16;
 
 // Adds M^-1 H P of the contacts' current impulses to the body velocities.
 void apply_impulses(const std::vector<Contact>& contacts, Bodies& bodies);

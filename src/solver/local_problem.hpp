@@ -68,6 +68,16 @@ inline double gap_rate(double gap, double inv_dt, double max_push_out) {
   return std::max(gap * inv_dt, -max_push_out);
 }
 
+// The round-off of recomputing contact c's impulse from the velocities of its
+// bodies, 16 eps |v|_c / w_n with |v|_c = |v_i| + r_i |w_i| + |v_j| + r_j |w_j|:
+// impulse changes below it are not progress (solver/contact_solver.hpp).
+inline double round_off_impulse(const Contact& c, const Bodies& b) {
+  double speed = b.velocity[c.i].norm() + c.arm_i * b.angular_velocity[c.i].norm();
+  if (!c.with_plane())
+    speed += b.velocity[c.other].norm() + c.arm_j * b.angular_velocity[c.other].norm();
+  return 16.0 * std::numeric_limits<double>::epsilon() * speed / c.w_n;
+}
+
 struct LocalAnswer {
   double p_n = 0.0;
   Vec3 p_t = Vec3::Zero();

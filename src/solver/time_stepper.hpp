@@ -7,9 +7,10 @@
 //   2. detect     contacts whose gap may close within the step (cell list),
 //                 and pairs within reach of the fluid's squeeze films
 //   3. warm start impulses of contacts that existed last step
-//   4. solve      nonlinear Gauss–Seidel until the impulses converge, the
-//                 boundary's block solved after every pass; then the residual
-//                 of the contact problem (solver/contact_residual.hpp)
+//   4. solve      nonlinear Gauss–Seidel until the stopping test holds
+//                 (solver/contact_solver.hpp), the boundary's block solved
+//                 after every pass; the residual of the contact problem
+//                 (solver/contact_residual.hpp) is reported
 //   5. store      impulses for the next step's warm start
 //   6. integrate  x += dt v   with the end-of-step velocities (implicit)
 //
@@ -72,6 +73,9 @@ class TimeStepper {
   void set_pass_observer(PassObserver observer) { pass_observer_ = std::move(observer); }
   // The solver's cap on the push-out speed of overlaps (SolverSettings).
   void set_max_push_out(double speed) { settings_.max_push_out = speed; }
+  // The residual's unit for the next steps (SolverSettings::reference_impulse):
+  // the driver's, from the load it applies and the step it chose.
+  void set_reference_impulse(double impulse) { settings_.reference_impulse = impulse; }
   double dt() const { return dt_; }
   const SolverSettings& settings() const { return settings_; }
   const FrictionLaw& law() const { return law_; }

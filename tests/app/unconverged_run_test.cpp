@@ -39,7 +39,7 @@ TEST(UnconvergedRun, NamesTheStepAndTheContactOfTheLargestResidual) {
   const long j = summary["contact_residual_max_bodies"][1].get<long>();
   EXPECT_GE(i, 0);
   EXPECT_NE(i, j);
-  EXPECT_GT(summary["contact_residual_max"].get<double>(), 1e-4);  // above solver.tolerance
+  EXPECT_GT(summary["contact_residual_max"].get<double>(), 1e-2);  // above solver.tolerance
 
   // The warning: how many steps, then where the worst was, as the summary says.
   EXPECT_NE(r.err.find("did not converge within solver.max_iterations = 3"), std::string::npos)

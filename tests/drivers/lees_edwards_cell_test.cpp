@@ -28,7 +28,6 @@ Config le_cell(const std::vector<std::string>& extra = {}) {
                                         "run.strain=1.0",
                                         "run.transient_strain=0.5",
                                         "run.snapshot_interval=0",
-                                        "solver.tolerance=1e-4",
                                         "solver.max_iterations=200"};
   overrides.insert(overrides.end(), extra.begin(), extra.end());
   return default_cell_config(overrides);

@@ -30,7 +30,6 @@ const std::vector<std::string> kCell = {"cell.boundary=\"lees-edwards\"",
                                         "run.transient_strain=2.0",
                                         "run.output_interval=0.02",
                                         "run.snapshot_interval=0.0",
-                                        "solver.tolerance=1e-4",
                                         "fluid.lubrication=none",
                                         "fluid.drag=none"};
 

@@ -20,7 +20,7 @@ namespace {
 const std::vector<std::string> kCell = {
     "cell.size=[8.0, 5.0, 9.0]", "fluid.lambda=1.0",         "run.strain=3.0",
     "run.transient_strain=1.0",  "run.output_interval=0.02", "run.snapshot_interval=0.0",
-    "solver.tolerance=1e-4",     "fluid.lubrication=normal", "fluid.drag=stokes"};
+    "fluid.lubrication=normal",  "fluid.drag=stokes"};
 
 TEST(ShearCellFluid, EnergyBudgetClosesWithFilmsAndDrag) {
   const auto dir =

@@ -18,8 +18,7 @@ namespace {
 Config tiny_cell() {
   return default_cell_config({"cell.size=[6.0, 5.0, 7.0]", "run.strain=0.03",
                               "run.transient_strain=0.01", "run.output_interval=0.005",
-                              "run.snapshot_interval=0", "solver.tolerance=1e-4",
-                              "solver.max_iterations=200"});
+                              "run.snapshot_interval=0", "solver.max_iterations=200"});
 }
 
 std::filesystem::path fresh_dir(const std::string& name) {

@@ -20,9 +20,9 @@
 namespace dilatant::shear_cell_push_out_test {
 namespace {
 
-const std::vector<std::string> kJammedCell = {
-    "cell.size=[8.0, 5.0, 9.0]", "cell.phi=0.64",         "friction.law=coulomb",
-    "friction.mu0=1.0",          "solver.tolerance=1e-4", "run.snapshot_interval=0.0"};
+const std::vector<std::string> kJammedCell = {"cell.size=[8.0, 5.0, 9.0]", "cell.phi=0.64",
+                                              "friction.law=coulomb", "friction.mu0=1.0",
+                                              "run.snapshot_interval=0.0"};
 
 TEST(CellPushOut, ASwollenParticleDoesNotCollapseTheStep) {
   const auto file = std::filesystem::temp_directory_path() /

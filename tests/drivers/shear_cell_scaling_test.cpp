@@ -22,7 +22,7 @@ nlohmann::json run_coulomb_cell(double tau) {
       // lambda 1 many contacts pass s_lim.
       "fluid.lambda=1.0", "cell.shear_stress=" + std::to_string(tau), "run.strain=5.0",
       "run.transient_strain=2.0", "run.output_interval=0.02", "run.snapshot_interval=0.0",
-      "solver.tolerance=1e-4", "fluid.lubrication=none", "fluid.drag=none"};
+      "fluid.lubrication=none", "fluid.drag=none"};
   const auto summary = test::run_cell_summary("bagnold_" + std::to_string(tau), overrides);
   return summary;
 }

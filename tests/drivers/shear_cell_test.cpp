@@ -24,7 +24,7 @@ Config small_cell(const std::vector<std::string>& extra = {}) {
       "cell.size=[6.0, 5.0, 7.0]",    "run.strain=0.04",
       "run.transient_strain=0.01",    "run.output_interval=0.005",
       "run.checkpoint_interval=0.01", "run.snapshot_interval=0.02",
-      "solver.tolerance=1e-4",        "solver.max_iterations=200"};
+      "solver.max_iterations=200"};
   overrides.insert(overrides.end(), extra.begin(), extra.end());
   return default_cell_config(overrides);
 }

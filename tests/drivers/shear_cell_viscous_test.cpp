@@ -28,8 +28,8 @@ namespace {
 std::vector<nlohmann::json> viscous_cells(const std::string& name, const std::string& mu0) {
   return test::run_cell_seeds(
       name, {"cell.size=[8.0, 5.0, 9.0]", "fluid.lambda=0.3", "friction.mu0=" + mu0,
-             "run.output_interval=0.02", "run.snapshot_interval=0.0", "solver.tolerance=1e-4",
-             "fluid.lubrication=none", "fluid.drag=none"});
+             "run.output_interval=0.02", "run.snapshot_interval=0.0", "fluid.lubrication=none",
+             "fluid.drag=none"});
 }
 
 TEST(CellViscous, ViscosityDoesNotDependOnBoundaryFriction) {

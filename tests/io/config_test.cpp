@@ -99,8 +99,10 @@ TEST(Config, DefaultsFillInEveryMissingKey) {
   EXPECT_EQ(c.fluid.lambda, 10.0);
   EXPECT_EQ(c.fluid.eta_f, 0.0);
   EXPECT_EQ(c.solver.dt, 0.0);
-  EXPECT_EQ(c.solver.tolerance, 1e-6);
+  EXPECT_EQ(c.solver.convergence, Convergence::Residual);
+  EXPECT_EQ(c.solver.tolerance, 1e-2);
   EXPECT_EQ(c.solver.max_iterations, 1000);
+  EXPECT_TRUE(c.notes.empty());
   EXPECT_EQ(c.run.strain, 10.0);
   EXPECT_EQ(c.run.time, 0.0);
   EXPECT_EQ(c.run.transient_strain, 2.0);
@@ -157,6 +159,38 @@ TEST(Config, ResolvedTomlRoundTrips) {
   const auto odd = parse("[cell]\nphi = 0.5812345678901234\n[friction]\ns_c = 1.2345e-7\n");
   expect_round_trip(odd);
   expect_round_trip(parse("[scene]\nparticles = 'p.csv'\n[run]\ntime = 1\n"));  // no planes
+}
+
+// A resolved config.toml written before solver.convergence existed (0.6)
+// keeps the meaning its solver.tolerance had, the relative change, and says
+// so in one note; a hand-written file, a new resolved one, or an old one that
+// names the test itself, takes what it says, silently.
+TEST(Config, AnOlderResolvedConfigKeepsItsToleranceMeaningWithOneNote) {
+  const std::string body =
+      "\n[cell]\nphi = 0.58\n\n[solver]\ntolerance = 0.0001\nmax_iterations = 1000\n";
+  const std::string old_header =
+      "# dilatant: resolved configuration of this run (every key, defaults filled in;\n"
+      "# keys and units: `dilatant run --help`). Loaded from: cell.toml\n";
+  const auto old = parse_config(old_header + body, "out/a/config.toml", "/", {});
+  EXPECT_EQ(old.solver.convergence, Convergence::Change);
+  EXPECT_EQ(old.solver.tolerance, 1e-4);
+  ASSERT_EQ(old.notes.size(), 1u);
+  EXPECT_THAT(old.notes[0], HasSubstr("out/a/config.toml was written before solver.convergence"));
+  EXPECT_THAT(old.notes[0], HasSubstr("solver.tolerance = 0.0001 keeps its old meaning"));
+  EXPECT_EQ(old.notes[0].find('\n'), std::string::npos);
+  // Written again, it names the test: read back as the same run, no note.
+  const auto again = parse_config(resolved_toml(old), "config.toml", "/", {});
+  EXPECT_EQ(again.solver.convergence, Convergence::Change);
+  EXPECT_TRUE(again.notes.empty());
+  EXPECT_THAT(resolved_toml(parse("[cell]\n")), HasSubstr("convergence = 'residual'"));
+
+  const auto hand_written = parse_config(body, "cell.toml", "/", {});
+  EXPECT_EQ(hand_written.solver.convergence, Convergence::Residual);
+  EXPECT_TRUE(hand_written.notes.empty());
+  const auto chosen =
+      parse_config(old_header + body, "config.toml", "/", {"solver.convergence=residual"});
+  EXPECT_EQ(chosen.solver.convergence, Convergence::Residual);
+  EXPECT_TRUE(chosen.notes.empty());
 }
 
 TEST(Config, LoadConfigResolvesParticlesNextToTheFile) {

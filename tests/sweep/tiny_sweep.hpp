@@ -13,7 +13,7 @@ size = [6.0, 5.0, 7.0]
 phi = 0.58
 
 [solver]
-tolerance = 1e-4
+tolerance = 1e-2
 
 [run]
 strain = 0.3

@@ -162,7 +162,7 @@ EnergyTerms energy_terms(const std::vector<Contact>& contacts, const Bodies& b,
 
 TEST(SettlingPacking, NoEnergyCreatedNoOverlapComesToRest) {
   World world = make_loose_packing();
-  const SolverSettings settings{1e-3, 200};
+  const SolverSettings settings{.tolerance = 1e-3, .max_iterations = 200};
   TimeStepper stepper(CoulombLaw{0.3, 0.0}, settings, kDt);
 
   double ke_peak = 0.0, worst_energy_margin = -1.0, worst_power_margin = -1.0;
