@@ -145,7 +145,8 @@ struct Config {
   RunConfig run;
   std::string source;  // file name used in messages ("<built-in>" for the default)
   // One line each that the user should read before the run (an older resolved
-  // config loaded with the meaning its keys had); run and sweep print them.
+  // config loaded with the meaning its keys had): dilatant run prints them,
+  // dilatant.load_config issues each as a UserWarning.
   std::vector<std::string> notes;
   toml::table resolved;  // every key with defaults filled in (= to_toml(*this) on load)
 
