@@ -322,7 +322,6 @@ SolveReport solve_contacts(const ContactProblem& problem) {
           conjugate_gradient_step(contacts, bodies, changes, direction, beta <= 1.0 ? beta : 0.0);
           change_before = sums.change_squared;
           if (boundary != nullptr) boundary->solve_block(contacts, bodies);
-          report.final_residual_known = false;  // the step moved the impulses on
         }
       }
       observe();
