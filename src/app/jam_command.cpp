@@ -29,7 +29,7 @@ CLI::App* add_jam_command(CLI::App& app, JamCommandArgs& args) {
 }
 
 // The built-in [sediment]: every default (the solver's residual in units of a
-// grain's weight impulse, drivers/model_setup.hpp weight_impulse()).
+// grain's weight impulse, drivers/model_setup.hpp weight_force()).
 constexpr const char* kBuiltInSediment = "[sediment]\n";
 
 int execute_jam_command(const JamCommandArgs& args) {

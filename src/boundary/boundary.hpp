@@ -20,6 +20,10 @@
 //                next even slabs (solver/slab_partition.hpp): it may write only
 //                bodies that contacts of even slabs do not touch.
 //
+// A step whose solve does not converge is undone and redone at half its
+// length (solver/time_stepper.hpp): save_state() before stage 1 keeps the own
+// degrees of freedom, restore_state() puts them back.
+//
 // Contacts touching a driven body obey the boundary's own contact law
 // (contact_law()), e.g. the walls' rough-grain Coulomb friction. Which bodies
 // are driven is written on the bodies themselves (Bodies::motion), so the
@@ -38,6 +42,20 @@
 
 namespace dilatant {
 
+// A degree of freedom of a boundary that moves its bodies rigidly along x
+// (the shear cell's top wall), solved inside the Gauss–Seidel pass as one
+// more body: each contact on one of its bodies sees the wall's compliance
+// 1/M in its local problem, and moves V by its impulse change at once,
+// V += sign dP_x / M (solver/contact_solver.cpp). Without it the wall's few
+// hundred contacts push together as if it were fixed and V jumps by their sum
+// once per pass: a Jacobi block, which oscillates when the wall is light
+// against stiff contacts (docs/model.md "The wall inside the solve").
+struct WallBlock {
+  double velocity = 0.0;     // V, current within the pass
+  double inv_mass = 0.0;     // 1/M
+  OwnerId owner = kNoOwner;  // the owner id of its bodies
+};
+
 class Boundary {
  public:
   virtual ~Boundary() = default;
@@ -48,6 +66,11 @@ class Boundary {
   virtual void predict(Bodies& bodies, double dt) = 0;
   virtual void begin_solve(const std::vector<Contact>& contacts, const Bodies& bodies) = 0;
   virtual void solve_block(const std::vector<Contact>& contacts, Bodies& bodies) = 0;
+  // The degree of freedom solved inside the pass, if any (null: none; its
+  // bodies are then fixed within the pass, as a fixed wall's).
+  virtual WallBlock* coupled_block() = 0;
+  virtual void save_state() = 0;
+  virtual void restore_state() = 0;
 };
 
 }  // namespace dilatant

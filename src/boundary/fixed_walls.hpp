@@ -17,6 +17,9 @@ class FixedWalls final : public Boundary {
   void predict(Bodies&, double) override {}
   void begin_solve(const std::vector<Contact>&, const Bodies&) override {}
   void solve_block(const std::vector<Contact>&, Bodies&) override {}
+  WallBlock* coupled_block() override { return nullptr; }
+  void save_state() override {}  // nothing moves
+  void restore_state() override {}
 
  private:
   FrictionLaw law_;

@@ -11,6 +11,8 @@ void RoughWalls::predict(Bodies& bodies, double dt) {
 }
 
 void RoughWalls::begin_solve(const std::vector<Contact>& contacts, const Bodies& bodies) {
+  // Before the passes' threads start: afterwards solve_block() writes only V.
+  block_ = {.velocity = top_.velocity, .inv_mass = 1.0 / top_.mass, .owner = kTopWall};
   top_contacts_.clear();
   const std::vector<OwnerId>& owner = bodies.owner;
   for (std::size_t k = 0; k < contacts.size(); ++k) {
@@ -30,6 +32,7 @@ void RoughWalls::solve_block(const std::vector<Contact>& contacts, Bodies& bodie
     impulse_x += sign * ((c.p_n + c.p_lub) * c.normal[0] + c.p_t[0]);
   }
   top_.velocity = free_velocity_ + impulse_x / top_.mass;
+  block_.velocity = top_.velocity;
   for (std::int32_t s : top_.spheres) bodies.velocity[s] = Vec3(top_.velocity, 0.0, 0.0);
 }
 

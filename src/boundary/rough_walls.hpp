@@ -38,6 +38,13 @@ class RoughWalls final : public Boundary {
   void predict(Bodies& bodies, double dt) override;
   void begin_solve(const std::vector<Contact>& contacts, const Bodies& bodies) override;
   void solve_block(const std::vector<Contact>& contacts, Bodies& bodies) override;
+  // The wall's speed is its only state a step changes (predict() recomputes
+  // the drive's work and V_free from it).
+  // V inside the pass (boundary.hpp): solve_block() sets it exactly after
+  // each pass, and the pass's contacts move it in between.
+  WallBlock* coupled_block() override { return &block_; }
+  void save_state() override { saved_velocity_ = top_.velocity; }
+  void restore_state() override { top_.velocity = saved_velocity_; }
 
   const SlidingWall& top() const { return top_; }
   SlidingWall& top() { return top_; }
@@ -55,6 +62,8 @@ class RoughWalls final : public Boundary {
   // sign of their impulse on it (+1 if the wall sphere is body i, -1 if it is the partner).
   double free_velocity_ = 0.0;
   double drive_work_ = 0.0;
+  double saved_velocity_ = 0.0;
+  WallBlock block_;
   std::vector<std::pair<std::int32_t, double>> top_contacts_;
 };
 

@@ -42,14 +42,15 @@ SolverSettings make_solver_settings(const SolverConfig& s) {
                         .threads = s.threads > 0 ? s.threads : cores,
                         .relaxation = s.relaxation,
                         .acceleration = s.acceleration,
-                        .skip_open_contacts = s.skip_open_contacts};
+                        .skip_open_contacts = s.skip_open_contacts,
+                        .redo_unconverged = s.redo_unconverged};
 }
 
-double weight_impulse(const World& world, double dt) {
+double weight_force(const World& world) {
   double heaviest = 0.0;
   for (std::size_t i = 0; i < world.bodies.size(); ++i)
     heaviest = std::max(heaviest, world.bodies.mass(i));
-  return heaviest * world.gravity.norm() * dt;
+  return heaviest * world.gravity.norm();
 }
 
 }  // namespace dilatant

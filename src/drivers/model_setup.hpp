@@ -14,11 +14,12 @@ namespace dilatant {
 // derives it from lambda.
 FrictionLaw make_friction_law(const FrictionConfig& friction, double eta_f);
 SolverSettings make_solver_settings(const SolverConfig& solver);
-// The residual's unit in a world under gravity (SolverSettings::reference_impulse;
-// docs/model.md "Convergence criterion"): the heaviest free body's weight
-// times dt, the impulse that gravity puts on one grain in one step. 0 without
-// gravity: the solver then measures against the loaded contacts' RMS impulse.
-double weight_impulse(const World& world, double dt);
+// The residual's unit in a world under gravity, as a force
+// (TimeStepper::set_reference_force; docs/model.md "Convergence criterion"):
+// the heaviest free body's weight, whose impulse in one step is what gravity
+// puts on one grain. 0 without gravity: the solver then measures against the
+// loaded contacts' RMS impulse.
+double weight_force(const World& world);
 // The fluid forces of [fluid] with viscosity eta_f (code units); null when
 // neither drag nor lubrication is on (the literal model). Held by pointer: the
 // stepper keeps its address, which must not move with the driver.

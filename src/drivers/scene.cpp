@@ -16,6 +16,7 @@ namespace dilatant {
 void StepStatistics::add(const StepReport& r) {
   ++steps;
   if (!r.solve.converged) ++unconverged;
+  if (r.redos > 0) ++redone;
   iterations_total += r.solve.iterations;
   iterations_max = std::max(iterations_max, r.solve.iterations);
   residual_max = std::max(residual_max, r.solve.residual);
@@ -48,13 +49,23 @@ Scene::Scene(Config config)
                make_solver_settings(config_.solver), scene_dt(config_, world_)),
       fluid_(make_fluid(config_.fluid, config_.fluid.eta_f)) {
   stepper_.set_fluid_forces(fluid_.get());  // a fluid at rest (ShearFlow's default)
-  stepper_.set_reference_impulse(weight_impulse(world_, stepper_.dt()));
-  total_steps_ = static_cast<long>(std::ceil(config_.run.time / stepper_.dt() - 1e-9));
+  stepper_.set_reference_force(weight_force(world_));
+  dt_ = stepper_.dt();
+  stepper_.set_shortest_dt(dt_ / kShortestStepDivisor);
+  total_steps_ = static_cast<long>(std::ceil(config_.run.time / dt_ - 1e-9));
 }
 
 const StepReport& Scene::step() {
+  if (rest_of_step_ <= 0.0) rest_of_step_ = dt_;
+  stepper_.set_dt(rest_of_step_);
   last_ = stepper_.step(world_);
   statistics_.add(last_);
+  rest_of_step_ -= last_.dt;
+  // A rest below round-off of dt ends the whole step.
+  if (rest_of_step_ <= 1e-9 * dt_) {
+    rest_of_step_ = 0.0;
+    ++whole_steps_;
+  }
   return last_;
 }
 
@@ -65,10 +76,11 @@ nlohmann::json Scene::summary(double wall_time) const {
   j["mode"] = "scene";
   j["particles"] = world_.bodies.size();
   j["time"] = world_.time;
-  j["dt"] = stepper_.dt();
+  j["dt"] = dt_;
   j["steps"] = s.steps;
   j["frac_steps_unconverged"] = s.steps > 0 ? double(s.unconverged) / double(s.steps) : 0.0;
   j["steps_unconverged"] = s.unconverged;
+  j["steps_redone"] = s.redone;  // at a shorter step (solver/time_stepper.hpp)
   j["solver_tolerance"] = config_.solver.tolerance;
   j["solver_max_iterations"] = config_.solver.max_iterations;
   j["mean_iterations"] = s.steps > 0 ? double(s.iterations_total) / double(s.steps) : 0.0;

@@ -19,6 +19,7 @@ namespace dilatant {
 struct StepStatistics {
   long steps = 0;
   long unconverged = 0;
+  long redone = 0;  // steps whose solve was redone at half the step
   long iterations_total = 0;
   int iterations_max = 0;
   double residual_max = 0.0;
@@ -34,12 +35,15 @@ class Scene {
   // shorter than the time step.
   explicit Scene(Config config);
 
+  // One step of dt(), or, if its solve had to be redone at a shorter step
+  // (solver/time_stepper.hpp), of that; the next calls then step the rest of
+  // dt(), so that whole steps end on the time grid k dt.
   const StepReport& step();
-  bool done() const { return statistics_.steps >= total_steps_; }
+  bool done() const { return whole_steps_ >= total_steps_; }
 
   const Config& config() const { return config_; }
   const World& world() const { return world_; }
-  double dt() const { return stepper_.dt(); }
+  double dt() const { return dt_; }
   const std::vector<Contact>& contacts() const { return stepper_.contacts(); }
   const StepStatistics& statistics() const { return statistics_; }
   // summary.json: run totals, solver convergence, version.
@@ -50,7 +54,9 @@ class Scene {
   World world_;
   TimeStepper stepper_;
   std::unique_ptr<SuspendingFluid> fluid_;  // null: no fluid forces
-  long total_steps_ = 0;
+  double dt_ = 0.0;
+  long total_steps_ = 0, whole_steps_ = 0;
+  double rest_of_step_ = 0.0;  // of the current whole step, still to be stepped
   StepStatistics statistics_;
   StepReport last_;
 };

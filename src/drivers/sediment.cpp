@@ -72,7 +72,9 @@ Sediment::Sediment(const SedimentSettings& settings)
       stepper_(CoulombLaw{.mu0 = settings.mu0, .eta_f = 0.0}, settings.solver,
                settings.dt > 0.0 ? settings.dt : 0.02 * settings.radius_min / terminal_speed_) {
   stepper_.set_fluid_forces(fluid_.get());
-  stepper_.set_reference_impulse(weight_impulse(world_, stepper_.dt()));
+  stepper_.set_reference_force(weight_force(world_));
+  dt_ = stepper_.dt();
+  stepper_.set_shortest_dt(dt_ / kShortestStepDivisor);
   max_time_ = settings.max_time_factor * settings.height / terminal_speed_;
   window_start_height_ = mean_height();
 }
@@ -85,6 +87,9 @@ double Sediment::mean_height() const {
 }
 
 const StepReport& Sediment::step() {
+  // Each step starts at the full dt, however short a redo made the last
+  // (solver/time_stepper.hpp): settling keeps no time grid.
+  stepper_.set_dt(dt_);
   last_ = stepper_.step(world_);
   ++steps_;
   max_overlap_ = std::max(max_overlap_, last_.max_overlap);

@@ -58,7 +58,7 @@ class Sediment {
   const World& world() const { return world_; }
   const SedimentSettings& settings() const { return settings_; }
   double terminal_speed() const { return terminal_speed_; }
-  double dt() const { return stepper_.dt(); }
+  double dt() const { return dt_; }
   long steps() const { return steps_; }
   double max_overlap() const { return max_overlap_; }
   double mean_height() const;
@@ -73,6 +73,7 @@ class Sediment {
   std::unique_ptr<SuspendingFluid> fluid_;
   TimeStepper stepper_;
   StepReport last_;
+  double dt_ = 0.0;  // each step's, unless a redo shortens it
   long steps_ = 0;
   double max_overlap_ = 0.0;
   double max_time_ = 0.0;

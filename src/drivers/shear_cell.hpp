@@ -91,6 +91,8 @@ class ShearCell {
   static constexpr double kCollapsedStep = 1e-6;
   double total_kinetic_energy() const;
   void close_row();
+  // A fault of the stepper's, with the step and strain it stopped at.
+  std::string where_stopped(const std::exception& fault) const;
 
   Config config_;
   CellUnits units_;

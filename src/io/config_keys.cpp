@@ -219,6 +219,16 @@ std::vector<ConfigKey> make_keys() {
       [](const Config& c, toml::table& t) {
         t.insert("skip_open_contacts", c.solver.skip_open_contacts);
       }});
+  k.push_back(ConfigKey{
+      "solver", "redo_unconverged", Any, "boolean", "", "true or false",
+      "a step whose solve ends unconverged is redone at half its length, down to 1/64, and "
+      "then stops the run (exit 1); false: accepted and counted (docs/model.md)",
+      [](const Section& s, Config& c, const std::filesystem::path&) {
+        c.solver.redo_unconverged = s.boolean("redo_unconverged", c.solver.redo_unconverged);
+      },
+      [](const Config& c, toml::table& t) {
+        t.insert("redo_unconverged", c.solver.redo_unconverged);
+      }});
   // [run]
   k.push_back(number("run", "strain", Cell, &run, &RunConfig::strain, at_least(0.0), "",
                      "total strain (> transient_strain)"));

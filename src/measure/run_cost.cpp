@@ -12,6 +12,10 @@ void RunCost::add_step(const StepReport& step) {
   contact_updates += step.solve.contact_visits;
   if (step.contacts_detected > 0)
     sweep_equivalents += step.solve.contact_visits / double(step.contacts_detected);
+  // The undone attempts' work is work (solver/time_stepper.hpp).
+  sweep_equivalents += step.redone_sweep_equivalents;
+  steps_redone += step.redos > 0 ? 1.0 : 0.0;
+  halvings += step.redos;
   steps += 1.0;
 }
 
@@ -32,6 +36,10 @@ void RunCost::write(nlohmann::json& j) const {
   // the drive's bound, or the fastest body's speed in the rest of the steps.
   j["frac_steps_dt_by_drive"] = steps > 0.0 ? steps_dt_by_drive / steps : 0.0;
   j["steps_per_strain"] = strain > 0.0 ? steps / strain : 0.0;
+  // Steps whose solve did not converge and were redone at half the step
+  // (solver/time_stepper.hpp); their undone work is in the sweep-equivalents.
+  j["steps_redone"] = steps_redone;
+  j["halvings"] = halvings;
   j["peak_memory_mib"] = peak_memory_mib();
 }
 

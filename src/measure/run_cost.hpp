@@ -20,6 +20,8 @@ struct RunCost {
   double sweep_equivalents = 0.0;  // sum over steps of contact_updates / contacts detected
   double steps = 0.0;              // steps run in this invocation
   double steps_dt_by_drive = 0.0;  // of those, steps whose dt the wall's drive bound set
+  double steps_redone = 0.0;       // of those, steps whose solve was redone at half the step ...
+  double halvings = 0.0;           // ... and the halvings all of them took
   double strain = 0.0;             // strain run in this invocation
   int threads = 1;
 
@@ -30,7 +32,8 @@ struct RunCost {
   void add_step(const StepReport& step);
   // Its keys of summary.json: wall_time_s, threads, time_*_s,
   // ns_per_contact_update, sweep_equivalents_per_step, wall_time_per_strain_s,
-  // frac_steps_dt_by_drive, steps_per_strain, peak_memory_mib.
+  // frac_steps_dt_by_drive, steps_per_strain, steps_redone, halvings,
+  // peak_memory_mib.
   void write(nlohmann::json& summary) const;
 };
 

@@ -70,6 +70,10 @@ struct SolverSettings {
   // Fastest push-out of an overlap (solver/local_problem.hpp, gap_rate()): no cap
   // unless a driver that chooses dt from the fastest body sets one.
   double max_push_out = kNoPushOutCap;
+  // A step whose solve ends unconverged is undone and redone at half its
+  // length, down to the driver's shortest step, and then stops the run
+  // (solver/time_stepper.hpp); false: it is accepted, and reported.
+  bool redo_unconverged = false;
   // What runs use unless solver.relaxation says otherwise: the same answer in
   // fewer passes (paper cell: 229 -> 145 with coulomb 0.3, 92 -> 74 with
   // stribeck at lambda 100); 1.6 stalls (bench/RESULTS.md).

@@ -24,13 +24,24 @@ struct Pass {
   const ContactProblem& problem;
   bool freeze_branches = false;
   Vec3* changes = nullptr;
+  // The boundary's degree of freedom solved inside the pass (boundary.hpp),
+  // for the boundary ranges only; null: none.
+  WallBlock* wall = nullptr;
 };
+
+// Contact c's side of the wall block: +1 if body i is the wall's, -1 if its
+// partner is, 0 if neither (the impulse on the wall is sign P).
+double wall_side(const Contact& c, const Bodies& b, const WallBlock& wall) {
+  if (b.owner[c.i] == wall.owner) return 1.0;
+  if (!c.with_plane() && b.owner[c.other] == wall.owner) return -1.0;
+  return 0.0;
+}
 
 // One pass over `contacts`, which start at index `first` of the problem's.
 // The hot loop: the pass's scalars are copied into locals first, as the
 // compiler cannot tell the bodies' doubles it stores to from the problem's it
 // would otherwise read back from memory after every store.
-template <class Law>
+template <bool kWall, class Law>
 PassChange relax(std::span<Contact> contacts, std::size_t first, const Law& law, const Pass& pass,
                  Visits visits) {
   Bodies& b = pass.problem.bodies;
@@ -41,9 +52,28 @@ PassChange relax(std::span<Contact> contacts, std::size_t first, const Law& law,
   Vec3* const changes = pass.changes != nullptr ? pass.changes + first : nullptr;
   std::vector<std::int32_t>* const loaded = visits.loaded;
   PassChange change;
+  WallBlock* const wall = pass.wall;
   const auto visit = [&](std::size_t k) {
     Contact& c = contacts[k];
-    const LocalAnswer a = solve_local(c, b, law, dt, inv_dt, relaxation,
+    // On the wall (boundary.hpp): its body moves at the block's current V, and
+    // the local problem sees the wall's compliance as well as the particle's.
+    // The rank-1 term a a^T / M (a = sign e_x) is bounded by its diagonal in
+    // the contact frame, w_n += n_x^2 / M, w_t += (1 - n_x^2) / M: exact
+    // normally, slightly under-relaxed tangentially, and the same fixed point
+    // (docs/model.md "The wall inside the solve").
+    double side = 0.0;
+    const Contact* local = &c;
+    [[maybe_unused]] Contact local_copy;  // unused, and optimised away, without a wall
+    if constexpr (kWall) side = wall_side(c, b, *wall);
+    if (side != 0.0) {
+      b.velocity[side > 0.0 ? c.i : c.other] = Vec3(wall->velocity, 0.0, 0.0);
+      local_copy = c;
+      const double nx2 = c.normal[0] * c.normal[0];
+      local_copy.w_n += nx2 * wall->inv_mass;
+      local_copy.w_t += (1.0 - nx2) * wall->inv_mass;
+      local = &local_copy;
+    }
+    const LocalAnswer a = solve_local(*local, b, law, dt, inv_dt, relaxation,
                                       imposed_branch(c, freeze_branches), max_push_out);
     const double p_n = a.p_n;
     const Vec3& p_t = a.p_t;
@@ -53,6 +83,7 @@ PassChange relax(std::span<Contact> contacts, std::size_t first, const Law& law,
     const double normal = p_n + a.p_lub;
     const Vec3 dp = (normal - c.p_n - c.p_lub) * c.normal + (p_t - c.p_t);
     apply_impulse(c, dp, b);
+    if (side != 0.0) wall->velocity += side * dp[0] * wall->inv_mass;
     if (changes != nullptr) changes[k] = dp;
     c.p_n = p_n;
     c.p_t = p_t;
@@ -83,7 +114,12 @@ PassChange relax(std::span<Contact> contacts, std::size_t first, const Law& law,
 PassChange relax_range(const Pass& pass, std::size_t begin, std::size_t end, const FrictionLaw& law,
                        Visits visits) {
   const std::span<Contact> part(pass.problem.contacts.data() + begin, end - begin);
-  return std::visit([&](const auto& l) { return relax(part, begin, l, pass, visits); }, law);
+  return std::visit(
+      [&](const auto& l) {
+        return pass.wall != nullptr ? relax<true>(part, begin, l, pass, visits)
+                                    : relax<false>(part, begin, l, pass, visits);
+      },
+      law);
 }
 
 }  // namespace
@@ -168,6 +204,9 @@ SolveReport solve_contacts(const ContactProblem& problem) {
   const SolverSettings& settings = problem.settings;
   const FrictionLaw& boundary_law = problem.boundary_law();
   Boundary* const boundary = problem.boundary;
+  // Only the last slab's boundary range touches the wall's bodies
+  // (solver/slab_partition.hpp), so one thread at a time moves it.
+  WallBlock* const wall = boundary != nullptr ? boundary->coupled_block() : nullptr;
   SolveReport report;
   if (boundary != nullptr) boundary->solve_block(contacts, bodies);
   if (contacts.empty()) return report;
@@ -202,8 +241,10 @@ SolveReport solve_contacts(const ContactProblem& problem) {
     };
     const std::size_t mid = slabs.boundary_begin[ks];
     const PassChange ch = relax_range(pass, slabs.begin[ks], mid, problem.law, visits(list));
+    Pass boundary_pass = pass;
+    boundary_pass.wall = wall;
     const PassChange ch_boundary =
-        relax_range(pass, mid, slabs.begin[ks + 1], boundary_law, visits(list_boundary));
+        relax_range(boundary_pass, mid, slabs.begin[ks + 1], boundary_law, visits(list_boundary));
     const std::size_t visited =
         full ? slabs.begin[ks + 1] - slabs.begin[ks] : list->size() + list_boundary->size();
     partial[static_cast<std::size_t>((pass_index & 1) * n + k)] = {

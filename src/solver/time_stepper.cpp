@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <span>
+#include <string>
 #include <tuple>
 
 namespace dilatant {
@@ -26,7 +27,7 @@ double TimeStepper::detection_margin(const World& world) const {
   return 4.0 * v_max * dt_ + 1e-3 * r_max;
 }
 
-void TimeStepper::warm_start(Bodies& bodies) {
+void TimeStepper::warm_start(Bodies& bodies, double scale) {
   // The look-ups only read the memory: contacts are shared among the threads.
   const auto n = static_cast<std::int64_t>(contacts_.size());
   const int threads = settings_.threads;
@@ -37,7 +38,7 @@ void TimeStepper::warm_start(Bodies& bodies) {
     if (it == memory_.end()) continue;
     // The normal may have turned since the last step: keep the part of the old
     // impulse that is still compressive, and its tangential part in the new plane.
-    const Vec3& p = it->second.impulse;
+    const Vec3 p = scale * it->second.impulse;
     c.previous_regime = it->second.regime;
     c.p_n = std::max(0.0, p.dot(c.normal));
     c.p_t = p - p.dot(c.normal) * c.normal;
@@ -87,9 +88,10 @@ std::pair<double, std::int32_t> TimeStepper::largest_overlap(const World& world)
   return out;
 }
 
-StepReport TimeStepper::step(World& world, Boundary* boundary) {
+void TimeStepper::predict_detect_solve(World& world, Boundary* boundary, double warm_scale,
+                                       StepReport& report) {
   Bodies& b = world.bodies;
-  StepReport report;
+  settings_.reference_impulse = reference_force_ * dt_;
 
   // 1. predict
   for (std::size_t i = 0; i < b.size(); ++i) {
@@ -123,7 +125,7 @@ StepReport TimeStepper::step(World& world, Boundary* boundary) {
   if (implicit_drag_.active()) implicit_drag_.swap_predicted_velocities(b);
   relative_velocities(b, free_velocity_);
   if (implicit_drag_.active()) implicit_drag_.swap_predicted_velocities(b);
-  warm_start(b);
+  warm_start(b, warm_scale);
   const auto solve_start = Clock::now();
   if (boundary != nullptr) boundary->begin_solve(contacts_, b);
   // The one context the solve's stages and the residual are handed.
@@ -147,8 +149,60 @@ StepReport TimeStepper::step(World& world, Boundary* boundary) {
   if (!drag_.empty()) report.drag_work = implicit_drag_.work(drag_, dt_, b);
 
   const auto solve_end = Clock::now();
-  report.detection_seconds = std::chrono::duration<double>(solve_start - detection_start).count();
-  report.solve_seconds = std::chrono::duration<double>(solve_end - solve_start).count();
+  report.detection_seconds += std::chrono::duration<double>(solve_start - detection_start).count();
+  report.solve_seconds += std::chrono::duration<double>(solve_end - solve_start).count();
+}
+
+void TimeStepper::fail(const World& world, const StepReport& report) const {
+  const Bodies& b = world.bodies;
+  std::string where = "no contact";
+  if (const std::int32_t k = report.contact_residual.worst_contact; k >= 0) {
+    const Contact& c = contacts_[static_cast<std::size_t>(k)];
+    // A driven body says whose it is (boundary/wall_owner.hpp: 1 bottom wall, 2 top wall).
+    const auto body = [&](std::size_t i) {
+      return b.owner[i] == kNoOwner ? fmt::format("{}", b.id[i])
+                                    : fmt::format("{} (boundary part {})", b.id[i], b.owner[i]);
+    };
+    where = c.with_plane() ? fmt::format("body id {} and plane {}", body(c.i), c.plane_index())
+                           : fmt::format("body ids {} and {}", body(c.i), body(c.other));
+  }
+  throw SolveFailure(fmt::format(
+      "the contact solve did not converge at t = {:.6g}, not even at the shortest step dt = {:.3g} "
+      "({} halvings): residual {:.3g} (solver.tolerance {:.3g}) after {} sweeps, worst at the "
+      "contact of {}",
+      world.time, dt_, report.redos, report.contact_residual.max(), settings_.tolerance,
+      report.solve.iterations, where));
+}
+
+StepReport TimeStepper::step(World& world, Boundary* boundary) {
+  Bodies& b = world.bodies;
+  StepReport report;
+  // A redo starts from the state before stage 1 (the memory of stage 5 and
+  // the positions are not yet touched).
+  const bool may_redo = settings_.redo_unconverged && shortest_dt_ > 0.0;
+  if (may_redo) {
+    saved_velocity_ = b.velocity;
+    saved_angular_velocity_ = b.angular_velocity;
+    if (boundary != nullptr) boundary->save_state();
+  }
+  for (double warm_scale = 1.0;; warm_scale *= 0.5) {
+    predict_detect_solve(world, boundary, warm_scale, report);
+    if (report.solve.converged || !may_redo) break;
+    // Halving past the shortest step (with round-off's allowance) fails.
+    // Undo the attempt: the bodies and the boundary as before stage 1 (also
+    // before a failure, so that the caller holds the last accepted state).
+    b.velocity = saved_velocity_;
+    b.angular_velocity = saved_angular_velocity_;
+    if (boundary != nullptr) boundary->restore_state();
+    if (0.5 * dt_ < shortest_dt_ * (1.0 - 1e-9)) fail(world, report);
+    if (!contacts_.empty())
+      report.redone_sweep_equivalents +=
+          report.solve.contact_visits / static_cast<double>(contacts_.size());
+    ++report.redos;
+    report.drag_work = 0.0;
+    dt_ *= 0.5;
+  }
+  report.dt = dt_;
 
   // 5. store impulses of the contacts that carry load
   memory_.clear();

@@ -15,11 +15,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-RunResult run_cell(const CliDir& dir, const fs::path& out, const std::string& max_iterations) {
+RunResult run_cell(const CliDir& dir, const fs::path& out, const std::string& max_iterations,
+                   const std::string& redo = "false") {
   return dir.run({"run", "--out", out.string(), "--set", "cell.size=[6.0, 5.0, 7.0]", "--set",
                   "run.strain=0.02", "--set", "run.transient_strain=0.01", "--set",
                   "run.snapshot_interval=0", "--set", "solver.threads=1", "--set",
-                  "solver.max_iterations=" + max_iterations, "--quiet"});
+                  "solver.max_iterations=" + max_iterations, "--set",
+                  "solver.redo_unconverged=" + redo, "--quiet"});
 }
 
 TEST(UnconvergedRun, NamesTheStepAndTheContactOfTheLargestResidual) {
@@ -70,6 +72,29 @@ TEST(UnconvergedRun, NamesTheStepAndTheContactOfTheLargestResidual) {
   const nlohmann::json quiet = nlohmann::json::parse(read_text(converged / "summary.json"));
   EXPECT_EQ(quiet["frac_steps_unconverged"].get<double>(), 0.0);
   EXPECT_GE(quiet["contact_residual_max_step"].get<long>(), 0);
+}
+
+// With solver.redo_unconverged a step that three sweeps cannot solve is redone
+// at dt/2, ..., dt/64 (solver/time_stepper.hpp) and then stops the run: exit 1,
+// one line naming the step, the halvings and the two bodies, no summary.
+TEST(UnconvergedRun, WithRedoAStepThatNeverConvergesStopsTheRunNamingIt) {
+  CliDir dir;
+  const fs::path out = dir.path() / "out";
+  const RunResult r = run_cell(dir, out, "3", "true");
+  ASSERT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("step 1 (strain 0): the contact solve did not converge"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("(6 halvings)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("worst at the contact of body id"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
+
+  // Enough sweeps: every step is accepted converged, none silently.
+  const fs::path converged = dir.path() / "converged";
+  const RunResult c = run_cell(dir, converged, "10000", "true");
+  ASSERT_EQ(c.exit_code, 0) << c.err;
+  const nlohmann::json summary = nlohmann::json::parse(read_text(converged / "summary.json"));
+  EXPECT_EQ(summary["frac_steps_unconverged"].get<double>(), 0.0);
+  EXPECT_LE(summary["contact_residual_max"].get<double>(), 1e-2);  // solver.tolerance
 }
 
 }  // namespace

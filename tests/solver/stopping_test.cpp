@@ -75,7 +75,8 @@ struct Column {
   }
 
   SolveReport solve(SolverSettings settings) {
-    settings.reference_impulse = m * kG * kDt;  // the weight's impulse (drivers: weight_impulse)
+    settings.reference_impulse =
+        m * kG * kDt;  // the weight's impulse (drivers: weight_force times dt)
     return solve_contacts(contacts, world.bodies, law, kDt, settings);
   }
   double fastest() const {
