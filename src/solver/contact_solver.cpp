@@ -22,6 +22,7 @@ struct Visits {
 // acceleration's; null: nowhere).
 struct Pass {
   const ContactProblem& problem;
+  double relaxation = 1.0;  // of this pass (relaxation_at_pass())
   bool freeze_branches = false;
   Vec3* changes = nullptr;
   // The boundary's degree of freedom solved inside the pass (boundary.hpp),
@@ -46,7 +47,7 @@ PassChange relax(std::span<Contact> contacts, std::size_t first, const Law& law,
                  Visits visits) {
   Bodies& b = pass.problem.bodies;
   const double dt = pass.problem.dt, inv_dt = 1.0 / dt;
-  const double relaxation = pass.problem.settings.relaxation;
+  const double relaxation = pass.relaxation;
   const double max_push_out = pass.problem.settings.max_push_out;
   const bool freeze_branches = pass.freeze_branches;
   Vec3* const changes = pass.changes != nullptr ? pass.changes + first : nullptr;
@@ -123,6 +124,10 @@ PassChange relax_range(const Pass& pass, std::size_t begin, std::size_t end, con
 }
 
 }  // namespace
+
+double relaxation_at_pass(const SolverSettings& settings, int pass) {
+  return 2 * pass < settings.max_iterations ? settings.relaxation : 1.0;
+}
 
 void apply_impulses(const std::vector<Contact>& contacts, Bodies& bodies) {
   for (const Contact& c : contacts) apply_impulse(c, (c.p_n + c.p_lub) * c.normal + c.p_t, bodies);
@@ -232,6 +237,7 @@ SolveReport solve_contacts(const ContactProblem& problem) {
   const auto relax_slab = [&](int k, int pass_index, bool freeze, bool full) {
     const auto ks = static_cast<std::size_t>(k);
     const Pass pass{.problem = problem,
+                    .relaxation = relaxation_at_pass(settings, pass_index),
                     .freeze_branches = freeze,
                     .changes = accelerate ? changes.data() : nullptr};
     std::vector<std::int32_t>* list = skip_open ? &loaded[2 * ks] : nullptr;

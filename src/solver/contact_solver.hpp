@@ -153,6 +153,16 @@ inline constexpr int kFullPassEvery = 8;
 inline constexpr double kResidualTrigger = 10.0;
 inline constexpr int kLongestDeferral = 16;
 
+// Over-relaxation holds for the first half of max_iterations; a solve that
+// has not converged by then goes on as plain Gauss–Seidel. With omega 1.3 a
+// sliding contact on the wall (mu 1) and its neighbours can fall into a
+// period-2 cycle of over-relaxed passes, at a residual of 2.9 P_ref that no
+// number of passes lowers; plain passes solve the same dumped step in 24
+// (docs/model.md "Over-relaxation"). A solve that converges within half its
+// passes is unchanged (fading omega earlier, halving its excess every 100
+// passes, cost 8% more work to 1e-2 on the paper cell's dumped steps).
+double relaxation_at_pass(const SolverSettings& settings, int pass);
+
 // Adds M^-1 H P of the contacts' current impulses to the body velocities.
 void apply_impulses(const std::vector<Contact>& contacts, Bodies& bodies);
 
