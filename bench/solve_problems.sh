@@ -48,7 +48,7 @@ declare -A overrides=(
   [gs]="--set solver.convergence=residual --set solver.tolerance=1e-3 --set solver.relaxation=1.0 --set solver.skip_open_contacts=false")
 for s in "${settings[@]}"; do
   table="$results/solve-$s.csv"
-  echo "group,file,passes,sweep_equivalents,residual_max,typical_impulse,converged,se_to_1e-2,se_to_1e-3" >"$table"
+  echo "group,file,passes,sweep_equivalents,residual_max,typical_impulse,converged,redos,se_to_1e-2,se_to_1e-3" >"$table"
   for g in $groups; do
     [[ $(wc -l <"$problems/$g/index.csv") -gt 1 ]] || continue
     echo "[$(date -u +%H:%M:%S)] $g, $s"
@@ -58,10 +58,10 @@ for s in "${settings[@]}"; do
       echo "  failed: $(tail -n 1 "$passes/$g-$s.err")"
       continue
     fi
-    # file passes SE residual typical_impulse converged SE_to_1e-2 SE_to_1e-3 ("-": never)
-    tail -n +2 "$passes/$g-$s.txt" |
-      awk -v g="$g" '{ for (i = 7; i <= 8; i++) if ($i == "-") $i = "";
-        print g "," $1 "," $2 "," $3 "," $4 "," $5 "," $6 "," $7 "," $8 }' >>"$table"
+    # file passes SE residual typical_impulse converged redos SE_to_1e-2 SE_to_1e-3 ("-": never)
+    tail -n +2 "$passes/$g-$s.txt" | grep -v "  failed: " |
+      awk -v g="$g" '{ for (i = 8; i <= 9; i++) if ($i == "-") $i = "";
+        print g "," $1 "," $2 "," $3 "," $4 "," $5 "," $6 "," $7 "," $8 "," $9 }' >>"$table"
   done
 done
 
