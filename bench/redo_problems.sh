@@ -13,16 +13,8 @@
 # driver's output) and table.md. A few minutes of one core.
 set -uo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.." || exit 1
-problems=bench/problems label=$(date +%Y%m%d) groups="A B1 B2 E G"
-while (($#)); do
-  case "$1" in
-    --problems) problems=$2; shift 2 ;;
-    --label) label=$2; shift 2 ;;
-    --groups) groups=$2; shift 2 ;;
-    *) echo "usage: redo_problems.sh [--problems DIR] [--label L] [--groups \"A B1 ...\"]" >&2; exit 2 ;;
-  esac
-done
-[[ -f "$problems/MANIFEST.csv" ]] || { echo "redo_problems.sh: no $problems/MANIFEST.csv (bench/dump_problems.sh)" >&2; exit 1; }
+source bench/lib.sh
+parse_problem_args redo_problems.sh "A B1 B2 E G" "$@"
 bash scripts/build.sh release dilatant-solve-step >/dev/null || { echo "redo_problems.sh: build failed" >&2; exit 1; }
 results="bench/results/step-problems/redo-$label"
 mkdir -p "$results"
@@ -33,6 +25,7 @@ for g in $groups; do
       --set solver.tolerance=1e-2 --set solver.redo_unconverged=$redo >"$results/$g-$redo.txt" 2>&1
   done
 done
+# shellcheck disable=SC2086  # the groups are words
 python3 - "$results" "$(git rev-parse --short HEAD)" $groups <<'PY'
 import statistics as st, sys
 results, head, *groups = sys.argv[1:]

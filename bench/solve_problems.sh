@@ -18,16 +18,8 @@
 # A few minutes of one core for the whole set.
 set -uo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.." || exit 1
-problems=bench/problems label=$(date +%Y%m%d) groups=""
-while (($#)); do
-  case "$1" in
-    --problems) problems=$2; shift 2 ;;
-    --label) label=$2; shift 2 ;;
-    --groups) groups=$2; shift 2 ;;
-    *) echo "usage: solve_problems.sh [--problems DIR] [--label L] [--groups \"A B1 ...\"]" >&2; exit 2 ;;
-  esac
-done
-[[ -f "$problems/MANIFEST.csv" ]] || { echo "solve_problems.sh: no $problems/MANIFEST.csv (bench/dump_problems.sh)" >&2; exit 1; }
+source bench/lib.sh
+parse_problem_args solve_problems.sh "" "$@"
 if [[ -z "$groups" ]]; then
   for d in "$problems"/*/index.csv; do groups+=" $(basename "$(dirname "$d")")"; done
 fi
