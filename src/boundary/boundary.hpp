@@ -49,7 +49,7 @@ namespace dilatant {
 // V += sign dP_x / M (solver/contact_solver.cpp). Without it the wall's few
 // hundred contacts push together as if it were fixed and V jumps by their sum
 // once per pass: a Jacobi block, which oscillates when the wall is light
-// against stiff contacts (docs/model.md "The wall inside the solve").
+// against stiff contacts (docs/shear-cell.md "Dynamics").
 struct WallBlock {
   double velocity = 0.0;     // V, current within the pass
   double inv_mass = 0.0;     // 1/M

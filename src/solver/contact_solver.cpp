@@ -61,7 +61,7 @@ PassChange relax(std::span<Contact> contacts, std::size_t first, const Law& law,
     // The rank-1 term a a^T / M (a = sign e_x) is bounded by its diagonal in
     // the contact frame, w_n += n_x^2 / M, w_t += (1 - n_x^2) / M: exact
     // normally, slightly under-relaxed tangentially, and the same fixed point
-    // (docs/model.md "The wall inside the solve").
+    // (docs/shear-cell.md "Dynamics").
     double side = 0.0;
     const Contact* local = &c;
     [[maybe_unused]] Contact local_copy;  // unused, and optimised away, without a wall

@@ -188,12 +188,12 @@ StepReport TimeStepper::step(World& world, Boundary* boundary) {
   for (double warm_scale = 1.0;; warm_scale *= 0.5) {
     predict_detect_solve(world, boundary, warm_scale, report);
     if (report.solve.converged || !may_redo) break;
-    // Halving past the shortest step (with round-off's allowance) fails.
     // Undo the attempt: the bodies and the boundary as before stage 1 (also
     // before a failure, so that the caller holds the last accepted state).
     b.velocity = saved_velocity_;
     b.angular_velocity = saved_angular_velocity_;
     if (boundary != nullptr) boundary->restore_state();
+    // Halving past the shortest step (with round-off's allowance) fails.
     if (0.5 * dt_ < shortest_dt_ * (1.0 - 1e-9)) fail(world, report);
     if (!contacts_.empty())
       report.redone_sweep_equivalents +=
