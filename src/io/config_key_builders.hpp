@@ -101,6 +101,23 @@ ConfigKey integer(std::string_view section, std::string_view name, RunMode mode,
 }
 
 template <class S>
+ConfigKey boolean(std::string_view section, std::string_view name, RunMode mode, Get<S> get,
+                  bool S::*member, std::string_view doc) {
+  return ConfigKey{section,
+                   name,
+                   mode,
+                   "boolean",
+                   "",
+                   "true or false",
+                   doc,
+                   [=](const Section& s, Config& c, const std::filesystem::path&) {
+                     bool& v = get(c).*member;
+                     v = s.boolean(name, v);
+                   },
+                   [=](const Config& c, toml::table& t) { t.insert(name, get(mut(c)).*member); }};
+}
+
+template <class S>
 ConfigKey vec3(std::string_view section, std::string_view name, RunMode mode, Get<S> get,
                Vec3 S::*member, bool (*ok)(const Vec3&), std::string_view message,
                std::string_view range_text, std::string_view unit, std::string_view doc) {

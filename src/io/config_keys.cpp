@@ -209,26 +209,14 @@ std::vector<ConfigKey> make_keys() {
                      {{"none", Acceleration::None}, {"cg", Acceleration::ConjugateGradient}},
                      "none: projected Gauss-Seidel sweeps; cg: the nonsmooth nonlinear conjugate "
                      "gradient on top of them (Silcowitz et al. 2010; same answer)"));
-  k.push_back(ConfigKey{
-      "solver", "skip_open_contacts", Any, "boolean", "", "true or false",
-      "sweeps between full ones visit only the contacts loaded after the last full sweep; "
-      "same stopping test, on a full sweep (not with acceleration = \"cg\")",
-      [](const Section& s, Config& c, const std::filesystem::path&) {
-        c.solver.skip_open_contacts = s.boolean("skip_open_contacts", c.solver.skip_open_contacts);
-      },
-      [](const Config& c, toml::table& t) {
-        t.insert("skip_open_contacts", c.solver.skip_open_contacts);
-      }});
-  k.push_back(ConfigKey{
-      "solver", "redo_unconverged", Any, "boolean", "", "true or false",
-      "a step whose solve ends unconverged is redone at half its length, down to 1/64, and "
-      "then stops the run (exit 1); false: accepted and counted (docs/model.md)",
-      [](const Section& s, Config& c, const std::filesystem::path&) {
-        c.solver.redo_unconverged = s.boolean("redo_unconverged", c.solver.redo_unconverged);
-      },
-      [](const Config& c, toml::table& t) {
-        t.insert("redo_unconverged", c.solver.redo_unconverged);
-      }});
+  k.push_back(
+      boolean("solver", "skip_open_contacts", Any, &solver, &SolverConfig::skip_open_contacts,
+              "sweeps between full ones visit only the contacts loaded after the last full "
+              "sweep; same stopping test, on a full sweep (not with acceleration = \"cg\")"));
+  k.push_back(boolean("solver", "redo_unconverged", Any, &solver, &SolverConfig::redo_unconverged,
+                      "a step whose solve ends unconverged is redone at half its length, down to "
+                      "1/64, and then stops the run (exit 1); false: accepted and counted "
+                      "(docs/model.md)"));
   // [run]
   k.push_back(number("run", "strain", Cell, &run, &RunConfig::strain, at_least(0.0), "",
                      "total strain (> transient_strain)"));
