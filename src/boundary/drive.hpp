@@ -87,8 +87,10 @@ class Drive {
   // part of the state (ignored by a drive without bodies).
   virtual void set_contact_law(FrictionLaw law) = 0;
   // The longest step in which the drive moves nothing by more than `reach`
-  // (drivers/shear_cell.cpp, the automatic step).
-  virtual double time_step_bound(const World& world, double reach) const = 0;
+  // relative to what lies `span` below it (drivers/cell_time_step.cpp, the
+  // automatic step): span = the box height bounds the move in the lab frame,
+  // span ~ R the move relative to a neighbour in the drive's mean flow.
+  virtual double time_step_bound(const World& world, double reach, double span) const = 0;
   // The work the drive fed into the flow over the step just taken, of length
   // dt, whose measured particle shear stress was sigma_zx: the fed power
   // times dt.

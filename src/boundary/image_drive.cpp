@@ -1,5 +1,6 @@
 #include "boundary/image_drive.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "boundary/drive_record.hpp"
@@ -20,10 +21,14 @@ ImageControl ImageDrive::control_for(const DriveSpec& spec, double mass) {
 // from rest they move by a t^2 / 2 in a time t, no more than `reach` while
 // t <= sqrt(2 reach / a), as the wall (wall_drive.cpp). Under rate control they
 // do not accelerate; they move at V, and the bound is that of a body at V.
-double ImageDrive::time_step_bound(const World& world, double reach) const {
+// The images are a box height Lz away; two bodies `span` apart in the
+// homogeneous shear move relative to each other at the fraction span / Lz of
+// the images' speed, and accelerate at that fraction of a.
+double ImageDrive::time_step_bound(const World& world, double reach, double span) const {
+  const double fraction = std::min(1.0, span / world.box.length[2]);
   const double a = control_.rate_controlled ? 0.0 : control_.drive_force / control_.mass;
-  if (a > 0.0) return std::sqrt(2.0 * reach / a);
-  return reach / std::abs(world.box.shear_velocity);
+  if (a > 0.0) return std::sqrt(2.0 * reach / (a * fraction));
+  return reach / (std::abs(world.box.shear_velocity) * fraction);
 }
 
 void ImageDrive::respond(World& world, double sigma_zx, double dt) {

@@ -64,7 +64,7 @@ class ImageDrive final : public Drive {
   // No bodies, no block: every contact is between particles, under their law.
   Boundary* contact_block() override { return nullptr; }
   void set_contact_law(FrictionLaw) override {}
-  double time_step_bound(const World& world, double reach) const override;
+  double time_step_bound(const World& world, double reach, double span) const override;
   double fed_work(const World& world, double sigma_zx, double dt) const override {
     return fed_power(world, sigma_zx) * dt;
   }

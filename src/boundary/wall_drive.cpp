@@ -7,8 +7,9 @@
 namespace dilatant {
 
 // From rest, the drive alone moves the wall by F t^2 / (2M) in a time t: no
-// more than `reach` while t <= sqrt(2 reach M / F).
-double WallDrive::time_step_bound(const World&, double reach) const {
+// more than `reach` while t <= sqrt(2 reach M / F), past particles that have
+// not moved yet, whatever the span.
+double WallDrive::time_step_bound(const World&, double reach, double) const {
   const SlidingWall& wall = walls_.top();
   return std::sqrt(2.0 * reach * wall.mass / wall.drive_force);
 }

@@ -37,7 +37,7 @@ class WallDrive final : public Drive {
 
   Boundary* contact_block() override { return &walls_; }
   void set_contact_law(FrictionLaw law) override { walls_.set_contact_law(std::move(law)); }
-  double time_step_bound(const World& world, double reach) const override;
+  double time_step_bound(const World& world, double reach, double span) const override;
   double fed_work(const World&, double, double) const override { return walls_.drive_work(); }
   // Nothing: the wall answered the contacts within the step (its block).
   void respond(World&, double, double) override {}

@@ -10,6 +10,20 @@ namespace dilatant {
 // its current speed nor under the drive (its own bound, Drive::time_step_bound;
 // from rest under a force, sqrt(2 c r_min / a)):
 //     dt = min(c r_min / v_max, dt_drive).
+// In the lab frame (solver.step_frame = "lab", before 0.8) v_max is the
+// largest |v| + r |omega|. But the contact geometry changes with the speed of
+// a body relative to its neighbours, and in a shear flow the absolute speed
+// grows with the height: gamma_dot Lz / 2 at the top of a Lees–Edwards box, the
+// wall's V in a wall cell. The steps per strain then grew with the cell (10,
+// 16, 25 R boxes: 685, 1,028, 1,562; bench/RESULTS.md). In the flow frame
+// ("flow") the speed is taken relative to the drive's mean flow u(z)
+// (Drive::mean_flow), and the flow's own shear between neighbours is bounded
+// apart:
+//     v_max = max_i (|v_i - u(z_i)| + r_i |omega_i|) + |gamma_dot| R_max,
+// with the drive's bound taken over a span R_max instead of the box: two
+// neighbours then move relative to each other by at most 2 c r_min from their
+// fluctuations plus 2 c r_min from the mean shear, as in the lab frame, in
+// steps that no longer depend on the height.
 // An overlap left by an unconverged step is pushed out at |g|/dt, so a shorter
 // step pushes it faster; the fastest body sets the next step, so past a point
 // speed and step feed each other until the run blows up (a cold start at
@@ -18,17 +32,28 @@ namespace dilatant {
 // for a step shorter than the drive's, whatever the step.
 TimeStepChoice choose_time_step(const World& world, const Drive& drive,
                                 const SolverConfig& solver) {
-  if (solver.dt > 0.0) return {solver.dt, false};
+  if (solver.dt > 0.0) return {.dt = solver.dt, .mean_flow = std::nullopt};
   const Bodies& b = world.bodies;
-  double v_max = 0.0, r_min = b.radius[0];
+  const bool in_flow = solver.step_frame == StepFrame::MeanFlow;
+  const ShearFlow flow = in_flow ? drive.mean_flow(world) : ShearFlow{};
+  double v_max = 0.0, r_min = b.radius[0], r_max = 0.0;
   for (std::size_t i = 0; i < b.size(); ++i) {
-    v_max = std::max(v_max, b.velocity[i].norm() + b.radius[i] * b.angular_velocity[i].norm());
+    Vec3 v = b.velocity[i];
+    v[0] -= flow.shear_rate * (b.position[i][2] - flow.z0);
+    v_max = std::max(v_max, v.norm() + b.radius[i] * b.angular_velocity[i].norm());
     r_min = std::min(r_min, b.radius[i]);
+    r_max = std::max(r_max, b.radius[i]);
   }
+  v_max += std::abs(flow.shear_rate) * r_max;
   const double c = solver.max_displacement;
-  const double dt_drive = drive.time_step_bound(world, c * r_min);
+  const double span = in_flow ? r_max : world.box.length[2];
+  const double dt_drive = drive.time_step_bound(world, c * r_min, span);
   const double dt_speed = v_max > 0.0 ? c * r_min / v_max : dt_drive;
-  return {std::min(dt_drive, dt_speed), dt_drive <= dt_speed, dt_drive, c * r_min / dt_drive};
+  return {.dt = std::min(dt_drive, dt_speed),
+          .by_drive = dt_drive <= dt_speed,
+          .dt_drive = dt_drive,
+          .max_push_out = c * r_min / dt_drive,
+          .mean_flow = in_flow ? std::optional<ShearFlow>(flow) : std::nullopt};
 }
 
 double reference_stress(const CellConfig& cell, double density, double eta_f,

@@ -2,6 +2,7 @@
 // The shear cell's time step, chosen before each step (solver.dt = 0), and the
 // fastest push-out of an overlap that goes with it (docs/model.md "Overlap
 // push-out").
+#include <optional>
 #include <vector>
 
 #include "boundary/drive.hpp"
@@ -19,10 +20,14 @@ struct TimeStepChoice {
   // Fastest push-out of an overlap, c r_min / dt_drive (none with a fixed
   // solver.dt, whose step no speed can shorten).
   double max_push_out = kNoPushOutCap;
+  // The flow the step's speeds were taken relative to (solver.step_frame =
+  // "flow"; none in the lab frame): the detection margin takes it too.
+  std::optional<ShearFlow> mean_flow;
 };
 
 // solver.dt if set; else no body may move more than c = solver.max_displacement
-// times r_min in one step, neither at its current speed nor under the drive.
+// times r_min in one step, neither at its current speed nor under the drive;
+// in solver.step_frame's frame (the lab, or the drive's mean flow).
 TimeStepChoice choose_time_step(const World& world, const Drive& drive, const SolverConfig& solver);
 
 // The stress whose impulse on a particle's cross-section in one step,

@@ -126,6 +126,7 @@ const StepReport& ShearCell::step() {
   cost_.steps_dt_by_drive += choice.by_drive ? 1.0 : 0.0;
   stepper_.set_dt(s.dt);
   stepper_.set_max_push_out(choice.max_push_out);
+  stepper_.set_mean_flow(choice.mean_flow);
   const CellConfig& cell = *config_.cell();
   const double diameter = 2.0 * cell.radius_max;
   stepper_.set_reference_force(

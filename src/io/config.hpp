@@ -109,6 +109,9 @@ struct FluidConfig {
   DragKind drag = DragKind::None;
 };
 
+// The frame the automatic step bounds each body's move in (solver.step_frame).
+enum class StepFrame : std::uint8_t { MeanFlow, Lab };
+
 struct SolverConfig {
   double dt = 0.0;  // 0 => automatic (drivers)
   // Runs stop on the contact problem's residual, in units of the applied
@@ -119,6 +122,9 @@ struct SolverConfig {
   double tolerance = 1e-2;
   int max_iterations = SolverSettings{}.max_iterations;
   double max_displacement = 0.02;  // automatic dt (cell): largest move per step / r_min
+  // ... measured relative to the drive's mean flow, or in the lab frame
+  // (before 0.8; drivers/cell_time_step.hpp).
+  StepFrame step_frame = StepFrame::Lab;
   int freeze_branches_after = SolverSettings{}.freeze_branches_after;
   int threads = SolverSettings{}.threads;  // 0 => all cores (solver/slab_partition.hpp)
   double relaxation = SolverSettings::kRunRelaxation;

@@ -194,6 +194,11 @@ std::vector<ConfigKey> make_keys() {
   k.push_back(number("solver", "max_displacement", Cell, &solver, &SolverConfig::max_displacement,
                      Range{0.0, 0.5, false, true, {}, {}}, "r_min",
                      "with dt = 0: the step keeps every body's move below this fraction of r_min"));
+  k.push_back(choice("solver", "step_frame", Cell, &solver, &SolverConfig::step_frame,
+                     {{"flow", StepFrame::MeanFlow}, {"lab", StepFrame::Lab}},
+                     "with dt = 0, max_displacement bounds each body's move relative to the "
+                     "drive's mean shear flow (flow: the steps per strain do not grow with the "
+                     "cell's height) or in the lab frame (lab)"));
   k.push_back(integer("solver", "freeze_branches_after", Any, &solver,
                       &SolverConfig::freeze_branches_after, 0, std::numeric_limits<int>::max(),
                       "must be >= 0", ">= 0",

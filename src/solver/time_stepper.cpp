@@ -17,14 +17,28 @@ double TimeStepper::detection_margin(const World& world) const {
   // solve an impulse can speed a body up, so allow twice the largest predicted
   // approach, plus a small floor so that resting contacts are always found.
   const Bodies& b = world.bodies;
+  const ShearFlow flow = mean_flow_.value_or(ShearFlow{});
   double v_max = 0.0, r_max = 0.0;
   for (std::size_t i = 0; i < b.size(); ++i) {
-    v_max = std::max(v_max, b.velocity[i].norm() + b.radius[i] * b.angular_velocity[i].norm());
+    Vec3 v = b.velocity[i];
+    v[0] -= flow.shear_rate * (b.position[i][2] - flow.z0);
+    v_max = std::max(v_max, v.norm() + b.radius[i] * b.angular_velocity[i].norm());
     r_max = std::max(r_max, b.radius[i]);
   }
-  // Images across a Lees–Edwards boundary move at +-shear_velocity besides.
-  if (world.box.lees_edwards) v_max += std::abs(world.box.shear_velocity);
-  return 4.0 * v_max * dt_ + 1e-3 * r_max;
+  if (!mean_flow_) {
+    // Images across a Lees–Edwards boundary move at +-shear_velocity besides.
+    if (world.box.lees_edwards) v_max += std::abs(world.box.shear_velocity);
+    return 4.0 * v_max * dt_ + 1e-3 * r_max;
+  }
+  // Relative to the mean flow u(z) (a Lees–Edwards image's included: its
+  // drift is the flow's across Lz), bodies i, j whose surfaces are m apart
+  // approach at most at 2 v_max + |gamma_dot| (2 R_max + m); twice that over
+  // the step must stay within m:
+  //     m = 4 dt (v_max + |gamma_dot| R_max) / (1 - 2 |gamma_dot| dt).
+  const double shear = std::abs(flow.shear_rate);
+  const double margin =
+      4.0 * dt_ * (v_max + shear * r_max) / std::max(0.5, 1.0 - 2.0 * shear * dt_);
+  return margin + 1e-3 * r_max;
 }
 
 void TimeStepper::warm_start(Bodies& bodies, double scale) {

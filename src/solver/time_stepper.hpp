@@ -26,6 +26,7 @@
 // The stepper knows no particular cell: a boundary and fluid forces are given
 // to it (both optional; without them it integrates a plain granular world).
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <unordered_map>
 #include <utility>
@@ -39,6 +40,7 @@
 #include "solver/contact_residual.hpp"
 #include "solver/contact_solver.hpp"
 #include "solver/contact_work.hpp"
+#include "world/shear_flow.hpp"
 #include "world/world.hpp"
 
 namespace dilatant {
@@ -102,6 +104,9 @@ class TimeStepper {
   void set_shortest_dt(double dt) { shortest_dt_ = dt; }
   // Called after every pass of the solve (solver/contact_problem.hpp); empty: none.
   void set_pass_observer(PassObserver observer) { pass_observer_ = std::move(observer); }
+  // The mean flow the driver's step bounds speeds relative to (its detection
+  // margin then does too); none: the lab frame.
+  void set_mean_flow(std::optional<ShearFlow> flow) { mean_flow_ = flow; }
   // The solver's cap on the push-out speed of overlaps (SolverSettings).
   void set_max_push_out(double speed) { settings_.max_push_out = speed; }
   // The residual's unit for the next steps, as a force (the driver's, from the
@@ -149,6 +154,7 @@ class TimeStepper {
   double dt_;
   double shortest_dt_ = 0.0;
   double reference_force_ = 0.0;
+  std::optional<ShearFlow> mean_flow_;
   // Velocities and spins before stage 1, for a redo.
   std::vector<Vec3> saved_velocity_, saved_angular_velocity_;
   ContactDetector detector_;

@@ -67,10 +67,16 @@ TEST(ImageDrive, BoundsTheStepByTheImagesDisplacement) {
   const World w = box_at(1.5);
   const double reach = 0.02;
   const ImageDrive stress(ImageDrive::control_for(stress_spec(0.15), 2.0));
-  const double dt = stress.time_step_bound(w, reach), a = 0.15 * kLx * kLy / 2.0;
+  const double dt = stress.time_step_bound(w, reach, kLz), a = 0.15 * kLx * kLy / 2.0;
   EXPECT_NEAR(0.5 * a * dt * dt, reach, 1e-15);
   const ImageDrive rate(ImageDrive::control_for(rate_spec(0.25), 0.0));
-  EXPECT_DOUBLE_EQ(rate.time_step_bound(w, reach), reach / 1.5);
+  EXPECT_DOUBLE_EQ(rate.time_step_bound(w, reach, kLz), reach / 1.5);
+  // Relative to a neighbour a span s below, in the homogeneous shear: the
+  // fraction s / Lz of the images' speed and acceleration.
+  const double s = 0.25 * kLz;
+  EXPECT_DOUBLE_EQ(rate.time_step_bound(w, reach, s), reach / (1.5 * 0.25));
+  const double dt_s = stress.time_step_bound(w, reach, s);
+  EXPECT_NEAR(0.5 * 0.25 * a * dt_s * dt_s, reach, 1e-15);
 }
 
 // No walls: no bodies and no block in the contact problem, the homogeneous

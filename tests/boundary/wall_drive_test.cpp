@@ -74,7 +74,7 @@ TEST(WallDrive, AloneItsWorkIsItsKineticEnergyGain) {
 // From rest the drive alone moves the wall by F t^2 / 2M: by `reach` at the bound.
 TEST(WallDrive, BoundsTheStepByTheDisplacementItsForceCauses) {
   OneSphereCell c = one_sphere_cell(0.3, 2.0, 0.0);
-  const double reach = 0.02, dt = c.drive.time_step_bound(c.world, reach);
+  const double reach = 0.02, dt = c.drive.time_step_bound(c.world, reach, kLz);
   const double acceleration = 0.3 * kLx * kLy / 2.0;
   EXPECT_NEAR(0.5 * acceleration * dt * dt, reach, 1e-15);
 }
