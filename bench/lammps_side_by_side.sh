@@ -10,7 +10,10 @@
 #
 #   bash bench/lammps_side_by_side.sh [--label L] [--binary PATH] [--points "hi lo"]
 #                                     [--lammps-from LABEL0] [--report-only]
+#                                     [-- --set solver.step_frame=flow ...]
 #
+# Settings after -- are passed to both of our invocations (the table's
+# config.toml records them).
 # --report-only prints the table of an earlier run of LABEL without running anything.
 # --lammps-from reuses the LAMMPS summaries of the earlier run LABEL0 (same
 # machine, same session) and runs only dilatant: for a new build of ours; the
@@ -43,14 +46,16 @@ binary=""
 points="hi lo"
 report_only=0
 lammps_from=""
+extra=()
 while (($#)); do
   case "$1" in
+    --) shift; extra=("$@"); break ;;
     --lammps-from) lammps_from=$2; shift 2 ;;
     --label) label=$2; shift 2 ;;
     --binary) binary=$2; shift 2 ;;
     --points) points=$2; shift 2 ;;
     --report-only) report_only=1; shift ;;
-    *) echo "usage: lammps_side_by_side.sh [--label L] [--binary PATH] [--points \"hi lo\"] [--lammps-from L0] [--report-only]" >&2
+    *) echo "usage: lammps_side_by_side.sh [--label L] [--binary PATH] [--points \"hi lo\"] [--lammps-from L0] [--report-only] [-- --set KEY=VALUE ...]" >&2
        exit 2 ;;
   esac
 done
@@ -86,7 +91,7 @@ sys.exit(rc)' "$@"
 
   for point in $points; do
     warm_out="$scratch/dilatant-$point-warm" out="$scratch/dilatant-$point"
-    common=(--quiet --set solver.threads=1)
+    common=(--quiet --set solver.threads=1 "${extra[@]}")
     note "=== $point dilatant ${config[$point]} 0 -> ${warm[$point]} strain $(date -u +%H:%M:%SZ) load before: $(load)"
     "$binary" run "${config[$point]}" "${common[@]}" --out "$warm_out" \
       --set "run.strain=${warm[$point]}" \
