@@ -37,8 +37,9 @@ GENERATED = {"dilatant"}  # build/generated/dilatant/version.hpp, below everythi
 # The libraries of the README's dependency table, by the folder of their headers.
 LIBRARY_FOLDERS = {"Eigen", "fmt", "nlohmann", "toml++", "CLI", "gtest", "gmock", "benchmark",
                    "pybind11", "sys"}
-# Headers outside the C++ standard library without a folder: POSIX, OpenMP, MPI.
-LIBRARY_HEADERS = {"unistd.h", "fcntl.h", "spawn.h", "signal.h", "poll.h", "omp.h", "mpi.h"}
+# Headers outside the C++ standard library without a folder: POSIX, OpenMP, MPI, zlib.
+LIBRARY_HEADERS = {"unistd.h", "fcntl.h", "spawn.h", "signal.h", "poll.h", "omp.h", "mpi.h",
+                   "zlib.h"}
 SOURCE_SUFFIXES = {".hpp", ".cpp", ".h", ".inl", ".in"}
 
 INCLUDE = re.compile(r"\s*#\s*include\b\s*(.*)")

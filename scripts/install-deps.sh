@@ -9,6 +9,7 @@ packages=(
   g++ cmake ninja-build pkg-config                  # toolchain
   libgtest-dev libgmock-dev libbenchmark-dev        # tests and benchmarks
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libeigen3-dev libfmt-dev  # libraries
+  zlib1g-dev                                        # CRC-32 of checkpoints
   python3 python3-numpy python3-matplotlib python3-vtk9  # figures and post-processing scripts
   python3-dev python3-pybind11 python3-pytest      # the Python module and its tests
   openmpi-bin libopenmpi-dev                        # MPI sweeps (docs/cluster.md)

@@ -4,6 +4,7 @@
 
 #include <iostream>
 
+#include "drivers/model_setup.hpp"
 #include "drivers/sediment_run.hpp"
 #include "io/config.hpp"
 #include "io/input_error.hpp"
@@ -42,6 +43,8 @@ int execute_jam_command(const JamCommandArgs& args) {
         fmt::format("{}: dilatant jam needs a [sediment] table (a [cell] or "
                     "[scene] config is run by dilatant run)",
                     config.source));
+  if (const std::string cap = thread_cap_warning(config.solver); !cap.empty())
+    std::cerr << cap << "\n";
   RunOptions options;
   options.quiet = args.quiet;
   options.out_dir =

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "app/stop_request.hpp"
+#include "drivers/model_setup.hpp"
 #include "drivers/scene_run.hpp"
 #include "drivers/shear_cell_run.hpp"
 #include "io/config.hpp"
@@ -143,6 +144,8 @@ int execute_run_command(const RunCommandArgs& args) {
     throw InputError(config.source + ": a [sediment] config is run by dilatant jam");
   if (!args.quiet)
     for (const std::string& note : config.notes) std::cerr << note << "\n";
+  if (const std::string cap = thread_cap_warning(config.solver); !cap.empty())
+    std::cerr << cap << "\n";
   RunOptions options;
   options.quiet = args.quiet;
   if (!args.start_from.empty() && !config.cell())

@@ -1,5 +1,7 @@
 #include "drivers/model_setup.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <thread>
 
@@ -33,13 +35,26 @@ std::unique_ptr<SuspendingFluid> make_fluid(const FluidConfig& f, double eta_f) 
   return std::make_unique<SuspendingFluid>(drag, film);
 }
 
+int hardware_threads() {
+  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+std::string thread_cap_warning(const SolverConfig& s) {
+  if (s.threads <= hardware_threads()) return "";
+  return fmt::format(
+      "dilatant: warning: solver.threads = {} is more than this machine's {} hardware threads; "
+      "using {} (more threads than cores make every sweep wait; results do not depend on the "
+      "count)",
+      s.threads, hardware_threads(), hardware_threads());
+}
+
 SolverSettings make_solver_settings(const SolverConfig& s) {
-  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int cores = hardware_threads();
   return SolverSettings{.convergence = s.convergence,
                         .tolerance = s.tolerance,
                         .max_iterations = s.max_iterations,
                         .freeze_branches_after = s.freeze_branches_after,
-                        .threads = s.threads > 0 ? s.threads : cores,
+                        .threads = s.threads > 0 ? std::min(s.threads, cores) : cores,
                         .relaxation = s.relaxation,
                         .acceleration = s.acceleration,
                         .skip_open_contacts = s.skip_open_contacts,

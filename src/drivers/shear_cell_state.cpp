@@ -4,22 +4,27 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "boundary/drive_record.hpp"
 #include "io/atomic_file.hpp"
 #include "io/binary_archive.hpp"
+#include "io/checksum.hpp"
 #include "io/text.hpp"
 
 namespace dilatant {
 
 namespace {
 
-// "DILATNT7": rows with where the largest contact residual was (6: the
+// "DILATNT8": the file ends with the CRC-32 of every byte before it, 4 bytes
+// in the machine's order (io/checksum.hpp), checked before anything is read
+// (7: rows with where the largest contact residual was; 6: the
 // Lees–Edwards boundary's drive; 5: rows with the particle
 // stress tensor, the box's Lees–Edwards state; 4: rows with the fluid
 // forces' powers, geometry with phi_box; 3: rows with the contact residual;
 // 2: contact memory with regime)
-constexpr std::uint64_t kMagic = 0x37544e54414c4944ULL;
+constexpr std::uint64_t kMagic = 0x38544e54414c4944ULL;
+constexpr std::size_t kChecksumBytes = sizeof(std::uint32_t);
 
 // One function serves both directions so the field order cannot diverge. The
 // drive is written as its record (boundary/drive_record.hpp), whose fields
@@ -102,7 +107,15 @@ std::string checkpoint_bytes(const ShearCellState& state) {
     w.value(m.impulse);
     w.value(static_cast<std::uint8_t>(m.regime));
   }
+  w.value(crc32_of(w.bytes()));
   return w.bytes();
+}
+
+void seal_checkpoint(std::string& bytes) {
+  if (bytes.size() < kChecksumBytes) return;
+  const std::uint32_t crc =
+      crc32_of(std::string_view(bytes).substr(0, bytes.size() - kChecksumBytes));
+  std::memcpy(bytes.data() + bytes.size() - kChecksumBytes, &crc, kChecksumBytes);
 }
 
 ShearCellState load_checkpoint(const std::filesystem::path& file) {
@@ -147,11 +160,32 @@ void check_consistent(const ShearCellState& s, const DriveRecord& drive,
 
 }  // namespace
 
+namespace {
+
+// Any byte changed after writing (a disk, a copy, an editor) is refused: without
+// the check a damaged number resumed silently (4 bytes in the middle put
+// 1.08e-222 into the time series where 0.391 belonged).
+void check_checksum(const std::string& bytes, const std::filesystem::path& file) {
+  if (bytes.size() < sizeof(kMagic) + kChecksumBytes)
+    throw std::runtime_error("checkpoint is truncated");
+  const std::size_t body = bytes.size() - kChecksumBytes;
+  std::uint32_t stored = 0;
+  std::memcpy(&stored, bytes.data() + body, kChecksumBytes);
+  if (crc32_of(std::string_view(bytes.data(), body)) != stored)
+    throw std::runtime_error(fmt::format(
+        "{}: checkpoint is damaged or truncated: its CRC-32 does not match its contents (a "
+        "byte changed after it was written, or the file was cut short)",
+        file.string()));
+}
+
+}  // namespace
+
 ShearCellState read_checkpoint(std::string bytes, const std::filesystem::path& file) {
-  BinaryReader r(std::move(bytes));
+  // "DILATNT" and a format digit first, so that an older format (which has no
+  // checksum, or another layout) is named as such.
   std::uint64_t magic = 0;
-  r.value(magic);
-  // "DILATNT" and a format digit: an older format is named as such.
+  if (bytes.size() < sizeof(magic)) throw std::runtime_error("checkpoint is truncated");
+  std::memcpy(&magic, bytes.data(), sizeof(magic));
   constexpr std::uint64_t kFormatMask = 0x00ffffffffffffffULL;
   if (magic != kMagic && (magic & kFormatMask) == (kMagic & kFormatMask))
     throw std::runtime_error(fmt::format(
@@ -159,6 +193,10 @@ ShearCellState read_checkpoint(std::string bytes, const std::filesystem::path& f
         "this point anew without --resume",
         file.string(), static_cast<char>(magic >> 56), static_cast<char>(kMagic >> 56)));
   if (magic != kMagic) throw std::runtime_error(file.string() + ": not a dilatant checkpoint");
+  check_checksum(bytes, file);
+  BinaryReader r(std::move(bytes));
+  r.end_before(kChecksumBytes);
+  r.value(magic);
   ShearCellState s;
   DriveRecord drive;
   visit_state(r, s, drive);

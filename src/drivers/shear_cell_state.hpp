@@ -46,5 +46,8 @@ std::string checkpoint_bytes(const ShearCellState& state);
 ShearCellState load_checkpoint(const std::filesystem::path& file);
 // The same from a checkpoint's bytes; `file` names it in messages.
 ShearCellState read_checkpoint(std::string bytes, const std::filesystem::path& file);
+// Rewrites the checksum at the end of a checkpoint's bytes to match the rest:
+// for the fuzzer, whose mutations must reach the reader's checks behind it.
+void seal_checkpoint(std::string& bytes);
 
 }  // namespace dilatant

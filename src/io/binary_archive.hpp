@@ -43,7 +43,7 @@ class BinaryReader {
   template <class T>
   void value(T& v) {
     static_assert(std::is_trivially_copyable_v<T>);
-    if (pos_ + sizeof(T) > bytes_.size()) throw std::runtime_error("checkpoint is truncated");
+    if (pos_ + sizeof(T) > end()) throw std::runtime_error("checkpoint is truncated");
     std::memcpy(&v, bytes_.data() + pos_, sizeof(T));
     pos_ += sizeof(T);
   }
@@ -65,7 +65,7 @@ class BinaryReader {
   // allocated (fuzzing found a plane count of 2^44).
   void count(std::uint64_t& n, std::size_t bytes_each) {
     value(n);
-    if (n > (bytes_.size() - pos_) / bytes_each) throw std::runtime_error("checkpoint is corrupt");
+    if (n > (end() - pos_) / bytes_each) throw std::runtime_error("checkpoint is corrupt");
   }
   template <class T>
   void vector(std::vector<T>& v) {
@@ -74,10 +74,17 @@ class BinaryReader {
     v.resize(n);
     for (T& x : v) value(x);
   }
-  bool at_end() const { return pos_ == bytes_.size(); }
+  bool at_end() const { return pos_ == end(); }
+  // All the bytes, and the last `n` of them left out of what is read (a
+  // trailer the caller checks itself).
+  const std::string& bytes() const { return bytes_; }
+  void end_before(std::size_t n) { trailer_ = n; }
 
  private:
+  // Reads stop `trailer_` bytes before the end.
+  std::size_t end() const { return bytes_.size() >= trailer_ ? bytes_.size() - trailer_ : 0; }
   std::string bytes_;
+  std::size_t trailer_ = 0;
   std::size_t pos_ = 0;
 };
 

@@ -73,6 +73,9 @@ struct CellConfig {
   ShearControl control = ShearControl::Stress;
   double shear_rate = 0.0;     // imposed under control = rate
   double boundary_mass = 0.0;  // Lees–Edwards stress control; 0 = a top wall's mass
+  // A cell estimated to hold more spheres is refused before it is built
+  // (io/config_parse.cpp): a mistyped size must not hang the set-up.
+  int max_spheres = 1'000'000;
 };
 
 // Simulated centrifugation (`dilatant jam`, drivers/sediment.hpp): lengths in
@@ -85,6 +88,7 @@ struct SedimentConfig {
   int samples = 3;
   double stokes_number = 1e-3;  // g tau^2 / R, tau = 2 rho_p R^2 / (9 eta_f)
   double exclusion = 4.0;       // R left out at the floor and at the surface
+  int max_spheres = 1'000'000;  // as CellConfig::max_spheres
 };
 
 // Defaults: the engine's own (friction/defaults.hpp, solver/contact_solver.hpp),

@@ -28,6 +28,10 @@ std::vector<ConfigKey> make_keys() {
                    "every length must be > 0", "> 0 each", "R",
                    "Lx, Ly, Lz; periodic in x and y; Lz is the distance between the wall planes "
                    "(the box height, periodic too, under cell.boundary = \"lees-edwards\")"));
+  k.push_back(integer("cell", "max_spheres", Cell, &cell, &CellConfig::max_spheres, 1,
+                      std::numeric_limits<int>::max(), "must be >= 1", ">= 1",
+                      "a cell.size and cell.phi estimated to hold more spheres (walls included) "
+                      "are refused before the set-up; raise it to run a larger cell"));
   k.push_back(number("cell", "phi", Cell, &cell, &CellConfig::phi, open(0.0, 0.74), "",
                      "volume fraction of the mobile spheres, counted as cell.phi_definition says "
                      "(0.74: the densest packing of spheres)"));

@@ -12,6 +12,10 @@ void add_sediment_keys(std::vector<ConfigKey>& k) {
   k.push_back(vec3("sediment", "size", Sediment, &sediment, &SedimentConfig::size, +positive,
                    "every length must be > 0", "> 0 each", "R",
                    "Lx, Ly (periodic), and the height from the floor to the lid"));
+  k.push_back(integer("sediment", "max_spheres", Sediment, &sediment, &SedimentConfig::max_spheres,
+                      1, std::numeric_limits<int>::max(), "must be >= 1", ">= 1",
+                      "a sediment.size and sediment.phi estimated to hold more spheres are "
+                      "refused before the set-up; raise it to run a larger sediment"));
   k.push_back(number("sediment", "phi", Sediment, &sediment, &SedimentConfig::phi, open(0.0, 0.55),
                      "",
                      "volume fraction of the suspension before it settles (the paper "

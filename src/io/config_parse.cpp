@@ -3,6 +3,7 @@
 // follow here.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <numbers>
@@ -107,6 +108,28 @@ void check_boundary_keys(const Section& s, const CellConfig& cell) {
   }
 }
 
+// The spheres a box of `size` holds at `phi` with radii uniform in
+// [r_min, r_max] (mean volume (4/3) pi <r^3>, <r^3> = (r_max^4 - r_min^4) /
+// (4 (r_max - r_min))), plus two wall monolayers, each at most Lx Ly / (2 r^2)
+// spheres (a hexagonal layer of spheres of radius r holds Lx Ly / (2 sqrt(3) r^2)).
+double estimated_spheres(const Vec3& size, double phi, double r_min, double r_max, bool walls) {
+  const double r3 = r_max > r_min
+                        ? (std::pow(r_max, 4) - std::pow(r_min, 4)) / (4.0 * (r_max - r_min))
+                        : r_max * r_max * r_max;
+  const double particles = phi * size[0] * size[1] * size[2] / (4.0 / 3.0 * std::numbers::pi * r3);
+  return particles + (walls ? size[0] * size[1] / (r_max * r_max) : 0.0);
+}
+
+// A mistyped size (cell.size = [2000, 2000, 2000]) spun in the set-up for
+// over 12 minutes, silent and deaf to SIGINT: refused here with the estimate.
+void check_sphere_count(const Section& s, const Vec3& size, double estimate, int limit,
+                        std::string_view section) {
+  check(s, "size", size, estimate <= static_cast<double>(limit),
+        fmt::format("holds about {:.3g} spheres, more than {}.max_spheres = {} (raise it to run "
+                    "a cell this large)",
+                    estimate, section, limit));
+}
+
 // Keys that constrain each other, checked once all are read. The message blames
 // the key the user wrote (the later one if both were written).
 void check_constraints(const std::function<Section(std::string_view)>& section, const Config& c) {
@@ -124,6 +147,10 @@ void check_constraints(const std::function<Section(std::string_view)>& section, 
                         min_side));
     }
     check_boundary_keys(s, *cell);
+    check_sphere_count(s, cell->size,
+                       estimated_spheres(cell->size, cell->phi, cell->radius_min, cell->radius_max,
+                                         cell->boundary == CellBoundary::Walls),
+                       cell->max_spheres, "cell");
     const Section r = section("run");
     const bool ok = c.run.transient_strain < c.run.strain;
     if (r.find("transient_strain") || !r.find("strain"))
@@ -151,6 +178,11 @@ void check_constraints(const std::function<Section(std::string_view)>& section, 
             fmt::format("axis {} is periodic (scene.periodic), so its length must be > 0",
                         "xyz"[axis]));
   }
+  if (const SedimentConfig* sediment = c.sediment())
+    check_sphere_count(
+        section("sediment"), sediment->size,
+        estimated_spheres(sediment->size, sediment->phi, sediment->radius_min, 1.0, false),
+        sediment->max_spheres, "sediment");
   const Section f = section("friction");
   const FrictionConfig& fr = c.friction;
   if (c.sediment() != nullptr)

@@ -184,6 +184,9 @@ TEST(BadInputCatalogue, EveryCaseExitsTwoWithOneLineNamingTheCulprit) {
 
 // Checkpoints (issue 19, item 4): truncated, from another version, or of
 // another configuration: refused on --resume with exit 2 and the file named.
+// And any byte changed (issue 31, item 4): 4 bytes in the middle once resumed
+// without a word and put 1.08e-222 into the time series; the CRC-32 at the
+// end (format 8) refuses them, and a changed checksum as well.
 TEST(BadInputCatalogue, DamagedOrForeignCheckpointsAreRefused) {
   test::CliDir dir;
   std::ofstream(dir.path() / "c.toml") << kCell;
@@ -198,10 +201,15 @@ TEST(BadInputCatalogue, DamagedOrForeignCheckpointsAreRefused) {
   };
   std::string older = bytes;
   older[7] = '5';  // the format digit of the magic "DILATNT6"
+  std::string middle = bytes, last = bytes;
+  for (std::size_t k = 0; k < 4; ++k) middle[bytes.size() / 2 + k] ^= 0x5a;
+  last.back() ^= 0x01;  // a bit of the checksum itself
   for (const auto& [folder, names] : std::vector<std::pair<std::string, std::string>>{
            {damaged("truncated", bytes.substr(0, 100)), "truncated"},
            {damaged("older", older), "older dilatant"},
-           {damaged("garbage", "not a checkpoint at all"), "not a dilatant checkpoint"}}) {
+           {damaged("garbage", "not a checkpoint at all"), "not a dilatant checkpoint"},
+           {damaged("middle", middle), "checkpoint is damaged"},
+           {damaged("last", last), "checkpoint is damaged"}}) {
     const auto r = dir.run({"run", config, "--out", folder, "--resume"});
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
