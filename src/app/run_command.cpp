@@ -128,9 +128,23 @@ int run_cell(const Config& config, const RunOptions& options, bool resume,
         plane ? -outcome.max_overlap_body_j - 1 : outcome.max_overlap_body_j,
         outcome.overlap_tolerance);
   }
+  // A result that is not valid says why (exit 0 all the same: the run did
+  // what it was asked; validity is the result's, docs/shear-cell.md).
+  const nlohmann::json& summary = outcome.summary;
+  const bool invalid = summary.is_object() && summary.contains("invalid_reasons") &&
+                       !summary["invalid_reasons"].empty();
+  if (invalid) {
+    std::string reasons;
+    for (const auto& reason : summary["invalid_reasons"])
+      reasons += (reasons.empty() ? "" : "; ") + reason.get<std::string>();
+    std::cerr << fmt::format(
+        "dilatant: warning: the result is not valid: {} (summary.json: invalid_reasons)\n",
+        reasons);
+  }
   if (!options.quiet) {
-    std::cout << fmt::format("dilatant: {} steps{}; results in {}\n", outcome.steps,
-                             outcome.jammed ? " (the cell jammed)" : "", options.out_dir.string());
+    std::cout << fmt::format("dilatant: {} steps{}; results in {}{}\n", outcome.steps,
+                             outcome.jammed ? " (the cell jammed)" : "", options.out_dir.string(),
+                             invalid ? " (not valid: see the warning)" : "");
   }
   return 0;
 }

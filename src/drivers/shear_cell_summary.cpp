@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "dilatant/version.hpp"
 #include "drivers/shear_cell.hpp"
@@ -112,8 +114,26 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   j["steady"] = jammed || !drift.known ? nlohmann::json(nullptr) : nlohmann::json(drift.steady);
   j["wall_velocity_drift"] = drift.change;  // second half of the window minus first, relative
   j["wall_velocity_drift_err"] = drift.error;
-  j["valid"] = !jammed && (!lubricated || records.contacts.over_s_lim.mean <= 0.05) &&
-               profile_consistent && !drifting;
+  // Why a point is not valid, in words a user can act on (the CLI's warning
+  // repeats them; docs/shear-cell.md "Validity"): none, exactly when valid.
+  std::vector<std::string> invalid;
+  if (jammed) invalid.emplace_back("jammed: the flow stopped, no steady flow to measure");
+  if (lubricated && records.contacts.over_s_lim.mean > 0.05)
+    invalid.push_back(fmt::format(
+        "{:.0f}% of the contacts are beyond friction.s_lim (at most 5%): outside the lubrication "
+        "picture",
+        100.0 * records.contacts.over_s_lim.mean));
+  if (!profile_consistent)
+    invalid.emplace_back(
+        "the velocity profile is not linear in the bulk (gamma_dot_bulk and gamma_dot_gap "
+        "disagree): the shear localises");
+  if (drifting)
+    invalid.push_back(fmt::format(
+        "not steady: the wall speed drifted by {:+.0f}% +- {:.0f}% over the averaging window "
+        "(run longer, or raise run.transient_strain)",
+        100.0 * drift.change, 100.0 * drift.error));
+  j["valid"] = invalid.empty();
+  j["invalid_reasons"] = invalid;
   records.wall_forces.write(j);
   records.solver.write(j, ShearCell::kOverlapTolerance * cell.radius_min);
   // What the solver stopped on, and the stress its residual's unit is taken

@@ -26,6 +26,8 @@ TEST(CellJam, AJammedRunReportsTheBulkFractionOfItsPacking) {
   const auto j = jammed_cell("1.0");
   ASSERT_TRUE(j["jammed"].get<bool>());
   EXPECT_FALSE(j["valid"].get<bool>());
+  ASSERT_FALSE(j["invalid_reasons"].empty());
+  EXPECT_EQ(j["invalid_reasons"][0].get<std::string>().rfind("jammed", 0), 0u);
   EXPECT_TRUE(j["eta"].is_null());
   const double phi_bulk = j["phi_bulk"].get<double>();
   EXPECT_GT(phi_bulk, 0.55);
