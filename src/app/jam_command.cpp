@@ -55,8 +55,8 @@ int execute_jam_command(const JamCommandArgs& args) {
           : std::filesystem::path(args.out);
   const SedimentOutcome outcome = run_sediment(config, options);
   if (!args.quiet)
-    std::cout << fmt::format("dilatant: phi_max = {:.4f} +- {:.4f} (mu0 {}){}; results in {}\n",
-                             outcome.phi_max, outcome.phi_max_err, config.friction.mu0,
+    std::cout << fmt::format("dilatant: {} (mu0 {}){}; results in {}\n",
+                             phi_max_text(outcome, config.sediment()->samples), config.friction.mu0,
                              outcome.settled ? "" : ", NOT every sample settled",
                              options.out_dir.string());
   if (outcome.unconverged_steps > 0)

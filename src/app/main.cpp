@@ -2,8 +2,11 @@
 // CLI11 and calls the library; it owns the exit codes (README "Using it"):
 //   0 success, 2 bad input (one line naming file, key and problem), 1 other failure.
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <array>
 #include <exception>
 #include <iostream>
+#include <string_view>
 
 #include "app/analyze_command.hpp"
 #include "app/jam_command.hpp"
@@ -13,6 +16,7 @@
 #include "app/sweep_command.hpp"
 #include "dilatant/version.hpp"
 #include "io/input_error.hpp"
+#include "io/text.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -33,6 +37,20 @@ int main(int argc, char** argv) {
   dilatant::PredictCommandArgs predict_args;
   CLI::App* predict = dilatant::add_predict_command(app, predict_args);
 
+  // A mistyped command is named, with the one meant: CLI11 alone says "A
+  // subcommand is required", which misleads when one was given.
+  if (argc >= 2 && argv[1][0] != '-') {
+    static constexpr std::array<std::string_view, 6> kCommands = {"run",  "sweep", "analyze",
+                                                                  "plot", "jam",   "predict"};
+    const std::string_view given = argv[1];
+    if (std::find(kCommands.begin(), kCommands.end(), given) == kCommands.end()) {
+      std::cerr << "dilatant: error: '" << given << "' is not a command"
+                << dilatant::did_you_mean(given, kCommands)
+                << "; the commands are run, sweep, analyze, plot, jam and predict (see dilatant "
+                   "--help)\n";
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -169,4 +169,10 @@ SedimentOutcome run_sediment(const Config& config, const RunOptions& options) {
   return out;
 }
 
+std::string phi_max_text(const SedimentOutcome& outcome, int samples) {
+  if (samples > 1)
+    return fmt::format("phi_max = {:.4f} +- {:.4f}", outcome.phi_max, outcome.phi_max_err);
+  return fmt::format("phi_max = {:.4f} (one sample: no error bar)", outcome.phi_max);
+}
+
 }  // namespace dilatant

@@ -3,6 +3,8 @@
 // sample after sample, into OUT: config.toml (resolved), samples.csv (one row
 // per packing) and summary.json (phi_max, its error from the samples' scatter,
 // the fraction's sensitivity to the exclusion), each written whole or not at all.
+#include <string>
+
 #include "drivers/run_options.hpp"
 #include "drivers/sediment.hpp"
 #include "io/config.hpp"
@@ -21,5 +23,10 @@ struct SedimentOutcome {
 };
 
 SedimentOutcome run_sediment(const Config& config, const RunOptions& options);
+
+// "phi_max = 0.5612 +- 0.0040" over several samples; over one, which has no
+// error bar (summary.json has none), "phi_max = 0.5612 (one sample: no error
+// bar)" rather than a "+- 0.0000" that reads as an exact result.
+std::string phi_max_text(const SedimentOutcome& outcome, int samples);
 
 }  // namespace dilatant

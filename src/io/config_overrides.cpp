@@ -41,10 +41,12 @@ toml::table parse_value(std::string_view value) {
 // silently created (or as an unknown key in a section the file lacks).
 void check_known(const std::vector<std::string>& parts, const std::string& key) {
   if (!is_config_section(parts[0]))
-    throw InputError(fmt::format("--set {}: unknown section '{}' (known: {})", key, parts[0],
+    throw InputError(fmt::format("--set {}: unknown section '{}'{} (known: {})", key, parts[0],
+                                 did_you_mean(parts[0], config_sections()),
                                  join(config_sections())));
   if (parts.size() >= 2 && find_config_key(parts[0], parts[1]) == nullptr)
-    throw InputError(fmt::format("--set {}: unknown key (known in [{}]: {})", key, parts[0],
+    throw InputError(fmt::format("--set {}: unknown key{} (known in [{}]: {})", key,
+                                 did_you_mean(parts[1], config_key_names(parts[0])), parts[0],
                                  join(config_key_names(parts[0]))));
   if (parts.size() > 2)
     throw InputError(fmt::format("--set {}: '{}.{}' is not a table; set it as a whole", key,

@@ -28,7 +28,8 @@ RunMode check_sections(const toml::table& root, const std::string& source) {
   for (const auto& [key, node] : root) {
     const auto where = config_detail::where(source, &node, key.str());
     if (!is_config_section(key.str()))
-      throw InputError(fmt::format("{}: unknown key (known sections: {})", where,
+      throw InputError(fmt::format("{}: unknown section{} (known sections: {})", where,
+                                   did_you_mean(key.str(), config_sections()),
                                    config_detail::join(config_sections())));
     if (!node.is_table())
       throw InputError(fmt::format("{}: expected a table ([{}]), got {} {}", where, key.str(),

@@ -8,6 +8,7 @@
 
 #include "io/config_detail.hpp"
 #include "io/input_error.hpp"
+#include "io/text.hpp"
 
 namespace dilatant::config_detail {
 namespace {
@@ -176,8 +177,9 @@ void Section::reject_unknown(std::span<const std::string_view> known) const {
   if (table_ == nullptr) return;
   for (const auto& [key, node] : *table_)
     if (!contains(known, key.str()))
-      throw InputError(fmt::format("{}: unknown key (known in [{}]: {})",
-                                   where(source_, &node, name(key.str())), path_, join(known)));
+      throw InputError(fmt::format("{}: unknown key{} (known in [{}]: {})",
+                                   where(source_, &node, name(key.str())),
+                                   did_you_mean(key.str(), known), path_, join(known)));
 }
 
 std::vector<PlaneConfig> read_planes(const Section& scene) {

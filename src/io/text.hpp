@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -16,6 +17,15 @@ inline std::string_view trim(std::string_view s) {
   if (first == std::string_view::npos) return {};
   return s.substr(first, s.find_last_not_of(blanks) - first + 1);
 }
+
+// The candidate a mistyped word most likely meant: the closest by edit
+// distance (Levenshtein: insertions, deletions, substitutions; a swap of two
+// neighbours counts 1, as in Damerau's typing errors), if within a third of
+// the word's length (at least 1, at most 3); empty when none is that close.
+// For "did you mean" in messages: `rnu` -> `run`, `frcition` -> `friction`.
+std::string_view closest_word(std::string_view word, std::span<const std::string_view> candidates);
+// " (did you mean 'X'?)" for closest_word(), or "" when there is none.
+std::string did_you_mean(std::string_view word, std::span<const std::string_view> candidates);
 
 // The whole of a file the user named, byte for byte. A file that is missing,
 // a folder or unreadable is bad input (InputError, exit 2), in one line:

@@ -246,8 +246,9 @@ SweepSettings read_settings(const toml::table& t, const std::string& source) {
       }
     } else {
       std::vector<std::string> known(kSettingsKeys.begin(), kSettingsKeys.end());
-      throw InputError(fmt::format("{}: unknown key (known in [sweep]: {})",
-                                   where(source, node, name), join(known, ", ")));
+      throw InputError(fmt::format("{}: unknown key{} (known in [sweep]: {})",
+                                   where(source, node, name),
+                                   did_you_mean(key.str(), kSettingsKeys), join(known, ", ")));
     }
   }
   if (!s.continuation)

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli_runner.hpp"
+#include "drivers/sediment_run.hpp"
 
 namespace dilatant::jam_command_test {
 namespace {
@@ -34,6 +35,16 @@ TEST(JamCommand, SettlesAndReportsTheSedimentsFraction) {
   EXPECT_GT(j["phi_max_err"].get<double>(), 0.0);
   EXPECT_LT(j["max_overlap"].get<double>(), 1e-3);
   EXPECT_TRUE(j["phi_by_exclusion"].contains("4"));
+}
+
+// One sample has no error: its line says so instead of "+- 0.0000".
+TEST(JamCommand, TheResultLineGivesAnErrorBarOnlyOverSeveralSamples) {
+  SedimentOutcome outcome;
+  outcome.phi_max = 0.5612;
+  outcome.phi_max_err = 0.004;
+  outcome.settled = true;
+  EXPECT_EQ(phi_max_text(outcome, 1), "phi_max = 0.5612 (one sample: no error bar)");
+  EXPECT_EQ(phi_max_text(outcome, 3), "phi_max = 0.5612 +- 0.0040");
 }
 
 TEST(JamCommand, BadInputIsExit2WithOneLine) {
