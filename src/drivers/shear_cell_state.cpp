@@ -158,10 +158,6 @@ void check_consistent(const ShearCellState& s, const DriveRecord& drive,
       fail("box");
 }
 
-}  // namespace
-
-namespace {
-
 // Any byte changed after writing (a disk, a copy, an editor) is refused: without
 // the check a damaged number resumed silently (4 bytes in the middle put
 // 1.08e-222 into the time series where 0.391 belonged).

@@ -75,9 +75,8 @@ class BinaryReader {
     for (T& x : v) value(x);
   }
   bool at_end() const { return pos_ == end(); }
-  // All the bytes, and the last `n` of them left out of what is read (a
-  // trailer the caller checks itself).
-  const std::string& bytes() const { return bytes_; }
+  // The last `n` bytes left out of what is read (a trailer the caller checks
+  // itself).
   void end_before(std::size_t n) { trailer_ = n; }
 
  private:
