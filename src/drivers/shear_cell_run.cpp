@@ -61,15 +61,26 @@ ShearCell continued(const Config& config, const std::filesystem::path& start_fro
 // The run in `out` resumed from its checkpoint: only under the configuration
 // it ran with (its config.toml), and a checkpoint that cannot be read is bad
 // input naming its file (exit 2), like any other file given to dilatant.
+// run.strain alone may differ: a larger one extends the run (a finished one
+// too: its checkpoint holds the state before the last row was closed), with
+// the bits of a run made that long from the start; a smaller one is refused.
 ShearCell resumed(const Config& config, const std::filesystem::path& out) {
   const auto written = out / "config.toml";
+  static constexpr std::string_view kExtensible[] = {"run.strain"};
   if (std::filesystem::is_regular_file(written)) {
-    if (const auto difference =
-            config_difference(read_input_file(written, "run's configuration"), config))
+    const std::string text = read_input_file(written, "run's configuration");
+    if (const auto difference = config_difference(text, config, "here", kExtensible))
       throw InputError(
           fmt::format("{}: the run there has another configuration ({}): resume it with the same "
-                      "configuration and --set options, or choose another --out",
+                      "configuration and --set options (only run.strain may grow), or choose "
+                      "another --out",
                       written.string(), *difference));
+    const double before = toml::parse(text)["run"]["strain"].value_or(0.0);
+    if (config.run.strain < before)
+      throw InputError(fmt::format(
+          "{}: run.strain = {} is below the run's there ({}): --resume extends a run, it cannot "
+          "shorten one",
+          written.string(), config.run.strain, before));
   }
   try {
     return ShearCell::resumed(config, out / "checkpoint.bin");
@@ -133,8 +144,10 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
     }
   }
   if (progress) std::cerr << "\n";
-  cell.finish();
+  // The checkpoint before the last, partial row is closed: a --resume with a
+  // larger run.strain continues that row as an uninterrupted run would.
   cell.write_checkpoint(checkpoint);
+  cell.finish();
   RunCost cost = cell.cost();
   cost.build_s = build_s;
   cost.strain = cell.state().strain - strain_at_start;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <sstream>
 
@@ -16,9 +17,11 @@ std::string without_comments(const std::string& text) {
   return out;
 }
 
-// The first key whose value differs, as "key = a there, b here".
-std::string first_difference(const std::string& there_text, const toml::table& here,
-                             std::string_view here_name) {
+// The first key not in `ignored` whose value differs, as "key = a there, b
+// here"; nullopt when there is none.
+std::optional<std::string> first_difference(const std::string& there_text, const toml::table& here,
+                                            std::string_view here_name,
+                                            std::span<const std::string_view> ignored) {
   toml::table there;
   try {
     there = toml::parse(there_text);
@@ -32,6 +35,7 @@ std::string first_difference(const std::string& there_text, const toml::table& h
       if (table == nullptr) continue;
       for (const auto& [key, value] : *table) {
         const std::string dotted = fmt::format("{}.{}", section.str(), key.str());
+        if (std::find(ignored.begin(), ignored.end(), dotted) != ignored.end()) continue;
         const toml::node* x = find_dotted_key(there, dotted);
         const toml::node* y = find_dotted_key(here, dotted);
         if (text(x) != text(y))
@@ -39,7 +43,17 @@ std::string first_difference(const std::string& there_text, const toml::table& h
       }
     }
   }
-  return "its config.toml differs";
+  return std::nullopt;
+}
+
+void erase_dotted_key(toml::table& table, std::string_view key) {
+  const auto dot = key.find('.');
+  if (dot == std::string_view::npos) {
+    table.erase(key);
+    return;
+  }
+  if (auto* section = table.get_as<toml::table>(key.substr(0, dot)))
+    section->erase(key.substr(dot + 1));
 }
 
 }  // namespace
@@ -52,9 +66,29 @@ const toml::node* find_dotted_key(const toml::table& resolved, std::string_view 
 }
 
 std::optional<std::string> config_difference(const std::string& file_text, const Config& config,
-                                             std::string_view here) {
+                                             std::string_view here,
+                                             std::span<const std::string_view> ignored) {
   if (without_comments(file_text) == without_comments(resolved_toml(config))) return std::nullopt;
-  return first_difference(file_text, config.resolved, here);
+  if (!ignored.empty()) {
+    // The same configuration once the ignored keys are taken out of both.
+    toml::table there;
+    try {
+      there = toml::parse(file_text);
+    } catch (const toml::parse_error&) {
+      return "its config.toml is not valid TOML";
+    }
+    toml::table mine = config.resolved;
+    for (const std::string_view key : ignored) {
+      erase_dotted_key(there, key);
+      erase_dotted_key(mine, key);
+    }
+    std::ostringstream a, b;
+    a << there;
+    b << mine;
+    if (a.str() == b.str()) return std::nullopt;
+  }
+  return first_difference(file_text, config.resolved, here, ignored)
+      .value_or("its config.toml differs");
 }
 
 }  // namespace dilatant

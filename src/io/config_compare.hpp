@@ -4,6 +4,7 @@
 // continuing a state under other settings. Comment lines are ignored (they
 // name the file the configuration was read from).
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -15,10 +16,11 @@ namespace dilatant {
 const toml::node* find_dotted_key(const toml::table& resolved, std::string_view key);
 
 // nullopt when `file_text` (a config.toml as written by a run) is `config`'s
-// resolved configuration; else the first difference, "friction.mu0 = 0.1
-// there, 0.3 here" with `here` naming the configuration (or why the text
-// cannot be compared).
+// resolved configuration, keys in `ignored` ("run.strain") aside; else the
+// first difference, "friction.mu0 = 0.1 there, 0.3 here" with `here` naming
+// the configuration (or why the text cannot be compared).
 std::optional<std::string> config_difference(const std::string& file_text, const Config& config,
-                                             std::string_view here = "here");
+                                             std::string_view here = "here",
+                                             std::span<const std::string_view> ignored = {});
 
 }  // namespace dilatant

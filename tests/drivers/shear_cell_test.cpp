@@ -4,6 +4,7 @@
 #include <atomic>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <sstream>
 
@@ -12,6 +13,7 @@
 #include "drivers/shear_cell_builder.hpp"
 #include "drivers/shear_cell_run.hpp"
 #include "io/config.hpp"
+#include "io/input_error.hpp"
 #include "solver/slab_partition.hpp"
 
 namespace dilatant::shear_cell_test {
@@ -123,6 +125,64 @@ TEST(ShearCellRun, ResumeEqualsUninterruptedRunBitForBit) {
     std::filesystem::remove_all(whole);
     std::filesystem::remove_all(pieces);
   }
+}
+
+// Extending a finished run (`dilatant run --resume` with a larger run.strain):
+// the bits of a run made that long from the start, and only run.strain may
+// differ (drivers/shear_cell_run.cpp).
+void run_into(const Config& config, const std::filesystem::path& out, bool resume) {
+  run_shear_cell(config, CellRunOptions{RunOptions{out, true}, resume, nullptr});
+}
+
+// The summary without the costs of the invocation that wrote it: what the
+// clock measured, and the work per step and steps per strain of this
+// invocation's steps (as after any resume).
+nlohmann::json physics_of(const std::filesystem::path& summary) {
+  nlohmann::json j = nlohmann::json::parse(read(summary));
+  for (const char* timing :
+       {"wall_time_s", "wall_time_per_strain_s", "ns_per_contact_update", "peak_memory_mib",
+        "time_build_s", "time_detection_s", "time_measure_s", "time_other_s", "time_solve_s",
+        "steps_per_strain", "sweep_equivalents_per_step"})
+    j.erase(timing);
+  return j;
+}
+
+TEST(ExtendRun, AFinishedRunExtendedGivesTheBitsOfTheLongerRun) {
+  const auto whole = fresh_dir("extend_whole");
+  const auto extended = fresh_dir("extended");
+  run_into(small_cell(), whole, false);
+  run_into(small_cell({"run.strain=0.025"}), extended,
+           false);  // finished mid-row (rows every 0.005)
+  ASSERT_TRUE(std::filesystem::exists(extended / "summary.json"));
+  run_into(small_cell(), extended, true);
+  for (const char* f : {"timeseries.csv", "contacts.csv", "velocity_profile.csv",
+                        "sommerfeld_hist.csv", "checkpoint.bin", "config.toml"})
+    EXPECT_EQ(read(whole / f), read(extended / f)) << f;
+  EXPECT_EQ(physics_of(whole / "summary.json"), physics_of(extended / "summary.json"));
+  std::filesystem::remove_all(whole);
+  std::filesystem::remove_all(extended);
+}
+
+TEST(ExtendRun, AShorterStrainOrAnotherKeyIsRefused) {
+  const auto out = fresh_dir("extend_refused");
+  run_into(small_cell({"run.strain=0.02"}), out, false);
+  const std::string series = read(out / "timeseries.csv");
+  try {
+    run_into(small_cell({"run.strain=0.015"}), out, true);
+    ADD_FAILURE() << "a run.strain below the run's was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("run.strain = 0.015 is below the run's there (0.02)"),
+              std::string::npos)
+        << e.what();
+  }
+  try {
+    run_into(small_cell({"friction.mu0=0.3"}), out, true);
+    ADD_FAILURE() << "another friction.mu0 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("friction.mu0"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(read(out / "timeseries.csv"), series);  // neither touched the run
+  std::filesystem::remove_all(out);
 }
 
 // The parallel sweep (solver/slab_partition.hpp) fixes the order of the
