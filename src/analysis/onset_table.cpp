@@ -52,6 +52,7 @@ OnsetPrediction predict_onset(const OnsetTable& table, double mu0, double phi, d
   }
   if (best == nullptr) return out;
   out.available = true;
+  out.too_far = std::abs(best->phi_bulk - phi) > kOnsetPhiReach;
   out.measured = *best;
   out.prefactor = best->onset_rate / onset_rate_scale(best->inertial_number, best->s_c);
   out.scale = onset_rate_scale(best->inertial_number, s_c);

@@ -47,8 +47,17 @@ class OnsetTable {
   std::vector<MeasuredOnset> onsets_;
 };
 
+// How far in phi from its measurement an onset is still given. I_c's
+// dependence on phi is not measured (data/jamming/onsets.csv: phi_bulk 0.61
+// only), so the measured I_c is used within the dense window where the literal
+// model has a Newtonian branch at all (phi_bulk 0.59-0.61,
+// docs/paper-reproduction.md) and nowhere else: at phi 0.3 it would be a guess
+// (docs/jamming.md "The onset scale").
+inline constexpr double kOnsetPhiReach = 0.02;
+
 struct OnsetPrediction {
   bool available = false;  // false when the table has no onset
+  bool too_far = false;    // measured further than kOnsetPhiReach from the asked phi
   MeasuredOnset measured;  // the onset the prediction rests on
   double prefactor = 0.0;  // C measured on it
   double scale = 0.0;      // I_c^2 / s_c at the asked s_c

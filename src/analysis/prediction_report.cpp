@@ -12,7 +12,7 @@ namespace dilatant::analysis {
 namespace {
 
 nlohmann::json onset_json(const OnsetPrediction& o, double s_c) {
-  if (!o.available) return nullptr;
+  if (!o.available || o.too_far) return nullptr;
   return {{"rate", o.rate},
           {"rate_unit", "eta_f/(rho_p R^2)"},
           {"scale_I2_over_s_c", o.scale},
@@ -29,6 +29,13 @@ nlohmann::json onset_json(const OnsetPrediction& o, double s_c) {
 }
 
 }  // namespace
+
+std::string onset_withheld(const OnsetPrediction& o, double phi) {
+  return fmt::format(
+      "the onset nearest in mu0 was measured at phi_bulk {:.3f} (mu0 {}), more than {} from phi "
+      "{}; how the onset moves with phi is not measured, so none is given",
+      o.measured.phi_bulk, o.measured.mu0, kOnsetPhiReach, phi);
+}
 
 void check_prediction_input(double mu0, double phi, double s_c, const PredictArgumentNames& names) {
   if (!(s_c > 0.0) || !std::isfinite(s_c))
@@ -69,6 +76,7 @@ nlohmann::json prediction_json(const PredictionReport& r, const std::string& tab
   j["uncertain"] = p.uncertain;
   j["mu0_beyond_table"] = r.mu0_beyond_table();
   j["onset"] = onset_json(r.onset, r.s_c);
+  if (r.onset.available && r.onset.too_far) j["onset_withheld"] = onset_withheld(r.onset, r.phi);
   j["table"] = table_name;
   j["version"] = kVersion;
   return j;

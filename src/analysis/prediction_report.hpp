@@ -21,6 +21,9 @@ struct PredictionReport {
   bool mu0_beyond_table() const { return mu0 > mu0_table_max; }
 };
 
+// Why no onset is given when the nearest measured one is too far in phi.
+std::string onset_withheld(const OnsetPrediction& o, double phi);
+
 // How the caller spells the inputs in messages: the CLI's flags, or Python's
 // argument names.
 struct PredictArgumentNames {

@@ -71,11 +71,7 @@ int draw_grid(const PredictCommandArgs& args) {
   write_file_atomically(out / "phase_diagram.csv",
                         analysis::phase_diagram_csv(load_table(args.table), {}));
   if (!args.no_plots) {
-#ifdef DILATANT_PHASE_PLOT_SCRIPT
-    const std::string failure = run_plot_script(args.python, DILATANT_PHASE_PLOT_SCRIPT, out);
-#else
-    const std::string failure = "no plotting script in this build";
-#endif
+    const std::string failure = run_plot_script(args.python, plot_script("phase_diagram.py"), out);
     if (!failure.empty())
       std::cerr << fmt::format("dilatant: plot skipped ({}); phase_diagram.csv is complete\n",
                                failure);
@@ -108,7 +104,10 @@ int execute_predict_command(const PredictCommandArgs& args) {
       p.phi_max_bl.error, p.phi_rcp.value, p.phi_rcp.error,
       p.uncertain ? fmt::format("; within {:.1f} sigma of a boundary: uncertain", p.margin_sigma)
                   : "");
-  if (onset.available)
+  if (onset.available && onset.too_far)
+    std::cout << fmt::format("onset of thickening: not given ({}; docs/jamming.md)\n",
+                             analysis::onset_withheld(onset, args.phi));
+  else if (onset.available)
     std::cout << fmt::format(
         "onset of thickening: gamma_dot_c ~ C I_c^2/s_c = {:.3g} eta_f/(rho_p R^2) at s_c {:g} "
         "(I_c {:.3g} and C {:.3g} measured at mu0 {}, phi_bulk {:.3f}, s_c {:g}, {} model; "

@@ -107,7 +107,7 @@ TEST(PredictCommand, AnswersAndRefusesBadInput) {
 TEST(PredictCommand, OnsetScalesAsOneOverScAndGridWritesTheDiagram) {
   test::CliDir dir;
   const auto at = [&](const char* s_c) {
-    const auto r = dir.run({"predict", "--mu0", "0.4", "--phi", "0.58", "--s-c", s_c, "--json"});
+    const auto r = dir.run({"predict", "--mu0", "0.4", "--phi", "0.6", "--s-c", s_c, "--json"});
     EXPECT_EQ(r.exit_code, 0) << r.err;
     return nlohmann::json::parse(r.out)["onset"];
   };
@@ -124,6 +124,23 @@ TEST(PredictCommand, OnsetScalesAsOneOverScAndGridWritesTheDiagram) {
   std::string head;
   std::getline(csv, head);
   EXPECT_EQ(head.rfind("mu0,phi,regime", 0), 0u) << head;
+}
+
+// The onsets are measured at phi_bulk 0.61 only: at phi 0.01 (or 0.58, the
+// literal model's CST-only fraction) none is given, and the answer says why.
+TEST(PredictCommand, NoOnsetFarFromTheMeasuredOne) {
+  test::CliDir dir;
+  for (const char* phi : {"0.01", "0.58"}) {
+    const auto r = dir.run({"predict", "--mu0", "0.4", "--phi", phi, "--json"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_TRUE(j["onset"].is_null()) << phi;
+    EXPECT_NE(j["onset_withheld"].get<std::string>().find("phi_bulk 0.610"), std::string::npos);
+    const auto text = dir.run({"predict", "--mu0", "0.4", "--phi", phi});
+    EXPECT_NE(text.out.find("onset of thickening: not given"), std::string::npos) << text.out;
+  }
+  const auto near = dir.run({"predict", "--mu0", "0.4", "--phi", "0.6", "--json"});
+  EXPECT_TRUE(nlohmann::json::parse(near.out)["onset"].is_object());
 }
 
 }  // namespace
