@@ -12,6 +12,7 @@ packages=(
   zlib1g-dev                                        # CRC-32 of checkpoints
   python3 python3-numpy python3-matplotlib python3-vtk9  # figures and post-processing scripts
   python3-dev python3-pybind11 python3-pytest      # the Python module and its tests
+  python3-venv python3-setuptools python3-wheel     # pip install . (pyproject.toml, setup.py)
   openmpi-bin libopenmpi-dev                        # MPI sweeps (docs/cluster.md)
   clang-format                                      # formatting check (scripts/test.sh)
   clang libclang-rt-dev                             # libFuzzer targets (scripts/fuzz.sh)

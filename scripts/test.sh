@@ -54,6 +54,10 @@ if stage "release build" bash scripts/build.sh release; then
   stage "release tests" ctest_logged build release --output-on-failure --no-tests=error -j "$jobs" || true
 fi
 
+# `pip install .` into a fresh venv, and the Python tests against the installed
+# package (docs/python.md "Install with pip").
+stage "pip install" bash scripts/pip-check.sh || true
+
 # Stop at the first sanitizer report. detect_leaks=1 is checked to work here: at exit
 # LeakSanitizer suspends the threads with ptrace; where ptrace is forbidden (some
 # containers, or under gdb/strace) it aborts instead, and detect_leaks=0 is needed.

@@ -1,12 +1,15 @@
 """The shear cell step by step (drivers/shear_cell.hpp), for scripts and
-notebooks that look inside a run:
+notebooks that look inside a run (here a tiny cell; the default is the paper's):
 
-    cell = dilatant.ShearCell({"cell": {"size": [6.0, 5.0, 7.0]}})
-    while not cell.done:
-        cell.advance(strain=0.1)            # GIL released; Ctrl-C stops after a step
-        print(cell.strain, cell.wall_velocity, len(cell.contacts))
-    cell.finish()
-    cell.write_results("out/cell")         # the files `dilatant run` writes
+>>> import dilatant, tempfile
+>>> cell = dilatant.ShearCell({"cell": {"size": [6.0, 5.0, 7.0]},
+...                            "run": {"strain": 0.03, "transient_strain": 0.01}})
+>>> while not cell.done:
+...     _ = cell.advance(strain=0.01)   # GIL released; Ctrl-C stops after a step
+>>> cell.finish()
+>>> round(cell.strain, 2), len(cell.contacts) > 0
+(0.03, True)
+>>> cell.write_results(tempfile.mkdtemp())   # the files `dilatant run` writes
 
 State (code units R = rho_p = tau = 1): positions, velocities,
 angular_velocities (N x 3), radii, ids, groups (0 particle, 1 bottom wall,

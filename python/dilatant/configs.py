@@ -90,8 +90,23 @@ def load_config(config=None, overrides=None):
     return loaded
 
 
+def overrides_named(call, *args):
+    """call(*args), a ConfigError's "--set key" (the CLI's name for an override)
+    renamed "overrides key": in Python the value came from `overrides=`."""
+    try:
+        return call(*args)
+    except _core.ConfigError as e:
+        message = re.sub(r"(^|[ (])--set ", r"\1overrides ", str(e))
+        if message == str(e):
+            raise
+        raise _core.ConfigError(message) from None
+
+
 def _load(config, overrides):
-    sets = override_list(overrides)
+    return overrides_named(_load_with_sets, config, override_list(overrides))
+
+
+def _load_with_sets(config, sets):
     if isinstance(config, _core.Config):
         if sets:
             return _core.config_from_text(config.to_toml(), config.source, os.getcwd(), sets)

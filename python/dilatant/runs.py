@@ -48,12 +48,16 @@ class Result:
         return f"<dilatant.Result {self.config.mode}, {self.steps} steps, {where}>"
 
 
-def _warn_unconverged(config, outcome):
+def _warn_unconverged(config, outcome, keep):
     if outcome.get("unconverged_steps", 0) > 0:
         max_iterations = config.to_dict()["solver"]["max_iterations"]
+        # With out=None the files are gone when the caller reads this: point to
+        # what it holds instead.
+        see = ("timeseries.csv, summary.json" if keep else
+               "Result.timeseries['iterations'], Result.summary['frac_steps_unconverged']")
         warnings.warn(
             f"{outcome['unconverged_steps']} of {outcome['steps']} steps did not converge within "
-            f"solver.max_iterations = {max_iterations} (see timeseries.csv, summary.json)",
+            f"solver.max_iterations = {max_iterations} (see {see})",
             RuntimeWarning, stacklevel=4)
 
 
@@ -99,5 +103,11 @@ def _run_in(cfg, folder, progress, resume, start_from, keep):
         outcome = _core.run_scene(cfg, folder)
     else:
         outcome = _core.run_sediment(cfg, folder)
-    _warn_unconverged(cfg, outcome)
-    return Result(cfg, folder, outcome, keep)
+    _warn_unconverged(cfg, outcome, keep)
+    result = Result(cfg, folder, outcome, keep)
+    if result.summary is not None and result.summary.get("valid") is False:
+        # As the CLI's last line: a result that is not valid says why.
+        reasons = "; ".join(result.summary.get("invalid_reasons", [])) or "see the summary"
+        warnings.warn(f"the result is not valid: {reasons} (Result.summary['invalid_reasons'])",
+                      RuntimeWarning, stacklevel=3)
+    return result

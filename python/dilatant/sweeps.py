@@ -7,7 +7,7 @@ import warnings
 from pathlib import Path
 
 from . import _core
-from .configs import from_dict, kind, override_list
+from .configs import from_dict, kind, override_list, overrides_named
 from .tables import read_table
 
 
@@ -34,7 +34,10 @@ class SweepResult:
 def load_sweep(config, overrides=None):
     """The points of a sweep (dict, TOML text or path): a dilatant SweepPlan.
     Raises ConfigError naming the file, line, key and point."""
-    sets = override_list(overrides)
+    return overrides_named(_load_sweep_with_sets, config, override_list(overrides))
+
+
+def _load_sweep_with_sets(config, sets):
     how = kind(config)
     if how == "dict":
         return from_dict(_core.sweep_from_text, config, sets)
@@ -43,12 +46,15 @@ def load_sweep(config, overrides=None):
     return _core.sweep_from_text(config, "<text>", os.getcwd(), sets)
 
 
-def sweep(config, out, jobs=None, *, overrides=None, plots=True):
+def sweep(config, out, jobs=None, *, overrides=None, plots=True, progress=None):
     """Runs (or resumes) the sweep `config` in folder `out`; returns a SweepResult.
 
     jobs: points side by side (None: [sweep] jobs, else one per core; 0: one
     per core). plots: draw DIR/plots/ with dilatant.plots.sweep (needs
-    matplotlib; skipped with a warning otherwise). Ctrl-C checkpoints the
+    matplotlib; skipped with a warning otherwise). progress: callable(fraction)
+    called about ten times a second with the fraction of the sweep done
+    (finished points count 1, running ones their fraction of run.strain);
+    returning False stops the sweep as Ctrl-C does. Ctrl-C checkpoints the
     running points and raises KeyboardInterrupt; run again to resume.
     """
     plan = load_sweep(config, overrides)
@@ -59,7 +65,7 @@ def sweep(config, out, jobs=None, *, overrides=None, plots=True):
         jobs = cores
     if jobs < 0:
         raise _core.ConfigError(f"jobs = {jobs}: must be >= 0")
-    outcome = _core.run_sweep(plan, os.fspath(out), int(jobs))
+    outcome = _core.run_sweep(plan, os.fspath(out), int(jobs), progress)
     if outcome["done"] > 0:
         note = _core.analyse_sweep(os.fspath(out))
         if note:

@@ -10,6 +10,7 @@ namespace dilatant::python {
 
 void bind_config(pybind11::module_& m);      // Config, load/parse
 void bind_shear_cell(pybind11::module_& m);  // ShearCell, step by step
+void bind_scenes(pybind11::module_& m);      // Scene and Sediment, step by step
 void bind_runs(pybind11::module_& m);        // whole runs and sweeps, interruptible
 void bind_analysis(pybind11::module_& m);    // analyze
 void bind_predict(pybind11::module_& m);     // predict, phase diagram

@@ -16,6 +16,7 @@ PYBIND11_MODULE(_core, m) {
   pybind11::register_exception<dilatant::InputError>(m, "ConfigError", PyExc_ValueError);
   dilatant::python::bind_config(m);
   dilatant::python::bind_shear_cell(m);
+  dilatant::python::bind_scenes(m);
   dilatant::python::bind_runs(m);
   dilatant::python::bind_analysis(m);
   dilatant::python::bind_predict(m);

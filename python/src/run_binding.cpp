@@ -9,6 +9,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <atomic>
+#include <functional>
 
 #include "bindings.hpp"
 #include "drivers/scene_run.hpp"
@@ -26,6 +27,21 @@ namespace dilatant::python {
 
 namespace {
 
+// A poll for run_interruptibly: calls `progress` (may be None) with `fraction`
+// whenever it changed; only an explicit False from it stops the work (a
+// callback that returns nothing goes on).
+std::function<bool()> progress_reporter(const py::object& progress,
+                                        const std::atomic<double>& fraction) {
+  return [&progress, &fraction, reported = -1.0]() mutable {
+    if (progress.is_none()) return true;
+    const double now = fraction.load();
+    if (now == reported) return true;
+    reported = now;
+    const py::object answer = progress(now);
+    return !(py::isinstance<py::bool_>(answer) && !answer.cast<bool>());
+  };
+}
+
 // `progress` (may be None) gets the fraction of run.strain done, whenever it
 // changed; returning False stops the run (checkpoint written).
 py::dict run_cell(const Config& config, const std::filesystem::path& out, bool resume,
@@ -36,16 +52,7 @@ py::dict run_cell(const Config& config, const std::filesystem::path& out, bool r
   CellRunOptions options{RunOptions{out, /*quiet=*/true}, resume, &stop};
   options.start_from = start_from;
   options.progress = &fraction;
-  double reported = -1.0;
-  const auto report = [&] {
-    if (progress.is_none()) return true;
-    const double now = fraction.load();
-    if (now == reported) return true;
-    reported = now;
-    const py::object answer = progress(now);
-    // Only an explicit False stops: a callback that returns nothing goes on.
-    return !(py::isinstance<py::bool_>(answer) && !answer.cast<bool>());
-  };
+  const auto report = progress_reporter(progress, fraction);
   const CellOutcome outcome =
       run_interruptibly<CellOutcome>([&] { return run_shear_cell(config, options); }, stop, report);
   if (!outcome.interrupted) report();
@@ -86,14 +93,22 @@ py::dict run_sediment_py(const Config& config, const std::filesystem::path& out)
   return d;
 }
 
-py::dict run_sweep_py(const sweep::SweepPlan& plan, const std::filesystem::path& out, int jobs) {
+// `progress` (may be None) gets the fraction of the sweep done whenever it
+// changed (sweep_runner.hpp); returning False stops the sweep (the running
+// points checkpointed, as Ctrl-C).
+py::dict run_sweep_py(const sweep::SweepPlan& plan, const std::filesystem::path& out, int jobs,
+                      const py::object& progress) {
   std::atomic<bool> stop{false};
+  std::atomic<double> fraction{0.0};
   sweep::SweepRunOptions options;
   options.out = out;
   options.jobs = jobs;
   options.stop = &stop;
+  options.progress = &fraction;
+  const auto report = progress_reporter(progress, fraction);
   const sweep::SweepOutcome o = run_interruptibly<sweep::SweepOutcome>(
-      [&] { return sweep::run_sweep(plan, options); }, stop, [] { return true; });
+      [&] { return sweep::run_sweep(plan, options); }, stop, report);
+  if (!o.interrupted) report();
   py::dict d;
   d["points"] = o.points;
   d["done"] = o.done;
@@ -131,7 +146,8 @@ void bind_runs(py::module_& m) {
   m.def("sweep_from_path", &sweep::load_sweep, py::arg("path"), py::arg("overrides"));
   m.def("sweep_from_text", &sweep::parse_sweep, py::arg("text"), py::arg("source"),
         py::arg("base_dir"), py::arg("overrides"));
-  m.def("run_sweep", &run_sweep_py, py::arg("plan"), py::arg("out"), py::arg("jobs"));
+  m.def("run_sweep", &run_sweep_py, py::arg("plan"), py::arg("out"), py::arg("jobs"),
+        py::arg("progress"));
   m.def(
       "analyse_sweep",
       [](const std::filesystem::path& dir) {

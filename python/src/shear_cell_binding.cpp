@@ -11,11 +11,13 @@
 #include <limits>
 #include <optional>
 
+#include "arrays.hpp"
 #include "bindings.hpp"
 #include "drivers/shear_cell.hpp"
 #include "drivers/shear_cell_summary.hpp"
 #include "io/contacts_csv.hpp"
 #include "io/input_error.hpp"
+#include "stepping.hpp"
 
 namespace py = pybind11;
 
@@ -23,45 +25,19 @@ namespace dilatant::python {
 
 namespace {
 
-// Copies of the bodies' vectors, (N, 3): the cell goes on stepping after the
-// caller got them.
-py::array_t<double> vectors(const std::vector<Vec3>& v) {
-  py::array_t<double> a({static_cast<py::ssize_t>(v.size()), py::ssize_t{3}});
-  auto out = a.mutable_unchecked<2>();
-  for (std::size_t i = 0; i < v.size(); ++i)
-    for (int k = 0; k < 3; ++k) out(static_cast<py::ssize_t>(i), k) = v[i][k];
-  return a;
-}
-
-template <class T>
-py::array_t<T> values(const std::vector<T>& v) {
-  return py::array_t<T>(static_cast<py::ssize_t>(v.size()), v.data());
-}
-
 std::unique_ptr<ShearCell> build(const Config& config) {
   if (config.cell() == nullptr) throw InputError(config.source + ": not a shear-cell config");
   py::gil_scoped_release release;
   return std::make_unique<ShearCell>(config);
 }
 
-// Steps until `stop_at_strain` or `max_steps` (or done()); returns the steps taken.
+// Steps on by `strain` or `steps` (whichever first), or until done(); returns
+// the steps taken.
 long advance(ShearCell& cell, std::optional<double> strain, std::optional<long> steps) {
-  if (!strain && !steps) throw InputError("advance: give strain=... or steps=...");
-  if (strain && !(*strain >= 0.0)) throw InputError("advance: strain must be >= 0");
-  if (steps && *steps < 0) throw InputError("advance: steps must be >= 0");
+  const long max_steps = step_budget("strain", strain, steps);
   const double until =
       strain ? cell.state().strain + *strain : std::numeric_limits<double>::infinity();
-  const long max_steps = steps ? *steps : std::numeric_limits<long>::max();
-  long taken = 0;
-  while (taken < max_steps && cell.state().strain < until && !cell.done()) {
-    {
-      py::gil_scoped_release release;
-      cell.step();
-    }
-    ++taken;
-    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-  }
-  return taken;
+  return step_while(cell, max_steps, [&] { return cell.state().strain < until && !cell.done(); });
 }
 
 std::string timeseries_csv(const ShearCell& cell) {

@@ -34,11 +34,19 @@ def test_file_errors_match_the_cli(cli, tmp_path, text):
     assert str(error.value) == expected
 
 
-def test_override_errors_match_the_cli(cli, tiny_file, tmp_path):
+def test_override_errors_are_the_clis_named_as_overrides(cli, tiny_file, tmp_path):
+    """The CLI's message, with its "--set key" named as Python's `overrides`."""
     expected = cli_message(cli, tiny_file, "--set", "friction.mu0=-1", "--out", tmp_path / "o")
-    with pytest.raises(dilatant.ConfigError) as error:
-        dilatant.run(tiny_file, overrides=["friction.mu0=-1"])
-    assert str(error.value) == expected
+    assert "--set friction.mu0" in expected
+    for overrides in (["friction.mu0=-1"], {"friction.mu0": -1}):
+        with pytest.raises(dilatant.ConfigError) as error:
+            dilatant.run(tiny_file, overrides=overrides)
+        assert str(error.value) == expected.replace("--set friction.mu0", "overrides friction.mu0")
+    with pytest.raises(dilatant.ConfigError, match=r"^overrides frict\.mu0: unknown section"):
+        dilatant.load_config(tiny_file, overrides={"frict.mu0": 0.3})
+    with pytest.raises(dilatant.ConfigError, match=r"overrides fluid.lambda"):
+        dilatant.sweeps.load_sweep({**TINY, "fluid": {"lambda": [1.0, 10.0]}},
+                            overrides={"fluid.lambda": -1.0})
 
 
 def test_config_error_is_a_value_error():

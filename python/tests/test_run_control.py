@@ -90,9 +90,22 @@ def test_ctrl_c_stops_advance(tmp_path):
                                       tmp_path / "c.bin").steps > 0
 
 
-def test_unconverged_steps_are_reported_as_a_warning():
-    with pytest.warns(RuntimeWarning, match=r"steps did not converge within solver"):
+def test_unconverged_steps_are_reported_as_a_warning(tmp_path):
+    with pytest.warns(RuntimeWarning, match=r"steps did not converge within solver") as kept:
+        dilatant.run(TINY, tmp_path / "kept", overrides={"solver.max_iterations": 2})
+    assert any("summary.json" in str(w.message) for w in kept)
+    # out=None deletes the files: the warning points to what the Result holds.
+    with pytest.warns(RuntimeWarning, match=r"steps did not converge within solver") as gone:
         dilatant.run(TINY, overrides={"solver.max_iterations": 2})
+    assert not any("summary.json" in str(w.message) for w in gone)
+    assert any("Result.summary" in str(w.message) for w in gone)
+
+
+def test_a_result_that_is_not_valid_says_why():
+    with pytest.warns(RuntimeWarning, match=r"the result is not valid: .+") as caught:
+        r = dilatant.run(TINY, overrides={"solver.max_iterations": 2})
+    assert r.summary["valid"] is False and r.summary["invalid_reasons"]
+    assert any(r.summary["invalid_reasons"][0] in str(w.message) for w in caught)
 
 
 SWEEP_CHILD = """

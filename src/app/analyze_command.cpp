@@ -33,9 +33,9 @@ CLI::App* add_analyze_command(CLI::App& app, AnalyzeCommandArgs& args) {
   cmd->add_flag("-q,--quiet", args.quiet, "No summary on stdout");
   cmd->add_option("--python", args.python, "Python with matplotlib that draws the plots")
       ->capture_default_str();
-  cmd->add_option(
-      "--plot-script", args.plot_script,
-      "The plotting script (default: python/dilatant/plots/analysis.py of this source tree)");
+  cmd->add_option("--plot-script", args.plot_script,
+                  "The plotting script (default: dilatant/plots/analysis.py of the installed "
+                  "package, else of this source tree)");
   auto& s = args.settings;
   cmd->add_option("--onset-factor", s.onset_factor,
                   "Thickening starts where eta exceeds this x the Newtonian viscosity (> 1)")
@@ -110,11 +110,8 @@ int execute_analyze_command(const AnalyzeCommandArgs& args) {
       analysis::analyse(analysis::load_analysis_input(input), args.settings);
   analysis::write_report_files(report, out);
   if (!args.no_plots) {
-#ifdef DILATANT_PLOT_SCRIPT
-    const std::string script = args.plot_script.empty() ? DILATANT_PLOT_SCRIPT : args.plot_script;
-#else
-    const std::string script = args.plot_script;
-#endif
+    const std::string script =
+        args.plot_script.empty() ? plot_script("analysis.py") : args.plot_script;
     const std::string failure = run_plot_script(args.python, script, out);
     if (!failure.empty())
       std::cerr << fmt::format(

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "analysis/analysis_settings.hpp"
+#include "app/python_script.hpp"
 
 namespace dilatant {
 
@@ -15,8 +16,8 @@ struct AnalyzeCommandArgs {
   std::string out;  // empty: out/analysis/<input stem>
   bool no_plots = false;
   bool quiet = false;
-  std::string python = "/usr/bin/python3";  // Debian's, with matplotlib
-  std::string plot_script;                  // empty: the one of this source tree
+  std::string python = default_python();
+  std::string plot_script;  // empty: plot_script() (app/python_script.hpp)
   analysis::AnalysisSettings settings;
 };
 

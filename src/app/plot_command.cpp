@@ -25,9 +25,9 @@ CLI::App* add_plot_command(CLI::App& app, PlotCommandArgs& args) {
       ->check(CLI::ExistingDirectory);
   cmd->add_option("--python", args.python, "Python with matplotlib that draws the plots")
       ->capture_default_str();
-  cmd->add_option(
-      "--plot-script", args.plot_script,
-      "The plotting script (default: python/dilatant/plots/sweep.py of this source tree)");
+  cmd->add_option("--plot-script", args.plot_script,
+                  "The plotting script (default: dilatant/plots/sweep.py of the installed package, "
+                  "else of this source tree)");
   cmd->add_flag("-q,--quiet", args.quiet, "No message on stdout");
   return cmd;
 }
@@ -38,11 +38,7 @@ bool analyse_and_plot_sweep(const std::filesystem::path& dir, bool plots, const 
   if (!note.empty() && !quiet)
     std::cerr << fmt::format("dilatant: note: no flow-curve analysis ({})\n", note);
   if (!plots) return false;
-#ifdef DILATANT_SWEEP_PLOT_SCRIPT
-  const std::string script = plot_script.empty() ? DILATANT_SWEEP_PLOT_SCRIPT : plot_script;
-#else
-  const std::string script = plot_script;
-#endif
+  const std::string script = plot_script.empty() ? dilatant::plot_script("sweep.py") : plot_script;
   const std::string failure = run_plot_script(python, script, dir);
   if (failure.empty()) return true;
   std::cerr << fmt::format("dilatant: plots skipped ({}); the tables are complete\n", failure);

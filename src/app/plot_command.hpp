@@ -6,12 +6,14 @@
 #include <filesystem>
 #include <string>
 
+#include "app/python_script.hpp"
+
 namespace dilatant {
 
 struct PlotCommandArgs {
   std::string dir;
-  std::string python = "/usr/bin/python3";
-  std::string plot_script;  // empty: the one of this source tree
+  std::string python = default_python();
+  std::string plot_script;  // empty: plot_script() (app/python_script.hpp)
   bool quiet = false;
 };
 

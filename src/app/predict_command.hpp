@@ -9,6 +9,8 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "app/python_script.hpp"
+
 namespace dilatant {
 
 struct PredictCommandArgs {
@@ -23,7 +25,7 @@ struct PredictCommandArgs {
   bool grid = false;
   std::string out;  // --grid's folder (default out/predict)
   bool no_plots = false;
-  std::string python = "/usr/bin/python3";
+  std::string python = default_python();
 };
 
 CLI::App* add_predict_command(CLI::App& app, PredictCommandArgs& args);

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 
 extern char** environ;
@@ -23,6 +24,22 @@ std::string last_line(const std::string& text) {
 }
 
 }  // namespace
+
+std::string default_python() {
+  const char* python = std::getenv("DILATANT_PYTHON");
+  return python != nullptr && *python != '\0' ? python : "/usr/bin/python3";
+}
+
+std::string plot_script(std::string_view name) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::path self = fs::read_symlink("/proc/self/exe", error);
+  if (!error) {
+    const fs::path installed = self.parent_path().parent_path() / "plots" / name;
+    if (fs::is_regular_file(installed, error)) return installed.string();
+  }
+  return (fs::path(DILATANT_PLOTS_DIR) / name).string();
+}
 
 std::string run_plot_script(const std::string& python, const std::string& script,
                             const std::filesystem::path& dir) {

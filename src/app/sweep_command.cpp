@@ -55,9 +55,9 @@ CLI::App* add_sweep_command(CLI::App& app, SweepCommandArgs& args) {
   cmd->add_flag("--no-plots", args.no_plots, "Write the tables only, no plots");
   cmd->add_option("--python", args.python, "Python with matplotlib that draws the plots")
       ->capture_default_str();
-  cmd->add_option(
-      "--plot-script", args.plot_script,
-      "The plotting script (default: python/dilatant/plots/sweep.py of this source tree)");
+  cmd->add_option("--plot-script", args.plot_script,
+                  "The plotting script (default: dilatant/plots/sweep.py of the installed package, "
+                  "else of this source tree)");
   return cmd;
 }
 

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "app/python_script.hpp"
+
 namespace dilatant {
 
 struct SweepCommandArgs {
@@ -16,8 +18,8 @@ struct SweepCommandArgs {
   bool quiet = false;
   bool progress = false;  // the progress line even when stderr is no terminal (mpirun)
   bool no_plots = false;
-  std::string python = "/usr/bin/python3";  // Debian's, with matplotlib
-  std::string plot_script;                  // empty: the one of this source tree
+  std::string python = default_python();
+  std::string plot_script;  // empty: plot_script() (app/python_script.hpp)
 };
 
 CLI::App* add_sweep_command(CLI::App& app, SweepCommandArgs& args);

@@ -33,6 +33,10 @@ struct SweepRunOptions {
   bool show_progress = false;    // a status line on stderr, redrawn each second
   bool report_failures = false;  // a line on stderr per failed point
   const std::atomic<bool>* stop = nullptr;
+  // When set: the fraction of the sweep done (a finished, failed or skipped
+  // point counts 1, a running one its fraction of run.strain), updated by the
+  // watching thread (sweep_watch.hpp) about ten times a second.
+  std::atomic<double>* progress = nullptr;
 };
 
 struct SweepOutcome {

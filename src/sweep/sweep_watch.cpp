@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iostream>
 
 namespace dilatant::sweep {
@@ -37,6 +38,7 @@ void SweepWatch::tick(const SweepEvents& events) {
   for (const auto& note : notes)
     if (options_.report_failures || options_.show_progress)
       std::cerr << (progress_shown_ ? "\r\033[K" : "") << note << "\n";
+  if (options_.progress != nullptr) options_.progress->store(fraction_done());
   if (options_.show_progress && Clock::now() - last_line_ >= std::chrono::seconds(1)) {
     std::cerr << "\r\033[K" << progress_line() << std::flush;
     progress_shown_ = true;
@@ -45,7 +47,19 @@ void SweepWatch::tick(const SweepEvents& events) {
 }
 
 void SweepWatch::finish() {
+  if (options_.progress != nullptr) options_.progress->store(fraction_done());
   if (progress_shown_) std::cerr << "\n";
+}
+
+double SweepWatch::fraction_done() const {
+  const std::vector<PointStatus> status = work_.statuses();
+  if (status.empty()) return 1.0;
+  double done = 0.0;
+  for (std::size_t i = 0; i < status.size(); ++i) {
+    const bool running = status[i] == PointStatus::Pending || status[i] == PointStatus::Running;
+    done += running ? std::clamp(work_.fraction(i), 0.0, 1.0) : 1.0;
+  }
+  return done / static_cast<double>(status.size());
 }
 
 // The time left is extrapolated from the strain the running points made since

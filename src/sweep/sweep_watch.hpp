@@ -23,6 +23,7 @@ class SweepWatch {
 
  private:
   std::string progress_line();
+  double fraction_done() const;
 
   using Clock = std::chrono::steady_clock;
   SweepWork& work_;

@@ -1,0 +1,64 @@
+"""Scenes and sediments step by step, as dilatant.ShearCell for the shear cell:
+
+>>> import dilatant
+>>> pile = dilatant.Sediment({"sediment": {"size": [6.0, 6.0, 12.0], "samples": 1}})
+>>> pile.advance(steps=20)
+20
+>>> pile.positions.shape[1], pile.time > 0
+(3, True)
+>>> while not (pile.settled or pile.timed_out):
+...     _ = pile.advance(time=10.0)     # GIL released; Ctrl-C stops after a step
+>>> 0.4 < pile.measure(exclusion=2.0)["phi"] < 0.66
+True
+
+A Scene reads its particles from scene.particles (a CSV file) and steps to
+run.time (examples/pile/pile.toml of the source tree: `dilatant.Scene(path)`);
+its contacts are a numpy table. State in code units, as the CLI's files.
+"""
+from . import _core
+from .configs import load_config
+from .tables import read_table
+
+
+class _Stepped:
+    """What both share: the compiled object's attributes, a repr."""
+
+    def __getattr__(self, name):
+        if name == "_object":
+            raise AttributeError(name)
+        return getattr(self._object, name)
+
+    def __dir__(self):
+        return sorted(set(super().__dir__()) | set(dir(self._object)))
+
+
+class Scene(_Stepped):
+    def __init__(self, config, overrides=None):
+        self._object = _core.Scene(load_config(config, overrides))
+
+    def advance(self, time=None, steps=None):
+        """Steps on by `time` or `steps` (whichever first), or until done;
+        returns the steps taken."""
+        return self._object.advance(time=time, steps=steps)
+
+    @property
+    def contacts(self):
+        return read_table(self._object.contacts_csv())
+
+    def __repr__(self):
+        return f"<dilatant.Scene {len(self.radii)} bodies, t = {self.time:.4g}>"
+
+
+class Sediment(_Stepped):
+    def __init__(self, config, sample=0, overrides=None):
+        """Sample `sample` (seed + sample) of a [sediment] config."""
+        self._object = _core.Sediment(load_config(config, overrides), sample)
+
+    def advance(self, time=None, steps=None):
+        """Steps on by `time` (sqrt(R/g)) or `steps` (whichever first), or until
+        settled or timed out; returns the steps taken."""
+        return self._object.advance(time=time, steps=steps)
+
+    def __repr__(self):
+        state = "settled" if self.settled else "timed out" if self.timed_out else "settling"
+        return f"<dilatant.Sediment {len(self.radii)} spheres, t = {self.time:.4g}, {state}>"
