@@ -14,6 +14,7 @@
 #include "bindings.hpp"
 #include "drivers/scene_run.hpp"
 #include "drivers/sediment_run.hpp"
+#include "drivers/setup_monitor.hpp"
 #include "drivers/shear_cell_run.hpp"
 #include "interruptible.hpp"
 #include "io/input_error.hpp"
@@ -53,8 +54,17 @@ py::dict run_cell(const Config& config, const std::filesystem::path& out, bool r
   options.start_from = start_from;
   options.progress = &fraction;
   const auto report = progress_reporter(progress, fraction);
-  const CellOutcome outcome =
-      run_interruptibly<CellOutcome>([&] { return run_shear_cell(config, options); }, stop, report);
+  const CellOutcome outcome = run_interruptibly<CellOutcome>(
+      [&] {
+        try {
+          return run_shear_cell(config, options);
+        } catch (const SetupInterrupted&) {  // stopped before the first step: nothing to resume
+          CellOutcome o;
+          o.interrupted = true;
+          return o;
+        }
+      },
+      stop, report);
   if (!outcome.interrupted) report();
   py::dict d;
   d["steps"] = outcome.steps;

@@ -21,7 +21,7 @@ def test_the_command_is_the_packages_engine(cli):
 
 
 def test_the_command_draws_with_the_packages_plot_scripts(cli, tmp_path):
-    done = run_cli(cli, "analyze", SOURCE_DIR / "examples" / "analysis" / "A_0462.csv",
+    done = run_cli(cli, "analyze", SOURCE_DIR / "examples" / "analysis" / "manifest.toml",
                    "--out", tmp_path / "a", "--quiet")
     assert "plots skipped" not in done.stderr, done.stderr
     assert list((tmp_path / "a").rglob("*.png")), "no figure drawn"

@@ -8,6 +8,7 @@
 #include "app/stop_request.hpp"
 #include "drivers/model_setup.hpp"
 #include "drivers/scene_run.hpp"
+#include "drivers/setup_monitor.hpp"
 #include "drivers/shear_cell_run.hpp"
 #include "io/config.hpp"
 #include "io/config_keys.hpp"
@@ -98,7 +99,13 @@ int run_cell(const Config& config, const RunOptions& options, bool resume,
   CellRunOptions cell_options{options, resume, stop_on_interrupt()};
   cell_options.start_from = start_from;
   cell_options.dumps = dumps;
-  const CellOutcome outcome = run_shear_cell(config, cell_options);
+  CellOutcome outcome;
+  try {
+    outcome = run_shear_cell(config, cell_options);
+  } catch (const SetupInterrupted& e) {
+    std::cerr << fmt::format("dilatant: {}\n", e.what());
+    return 1;
+  }
   if (outcome.interrupted) {
     std::cerr << fmt::format(
         "dilatant: interrupted; checkpoint written to {}; continue with "

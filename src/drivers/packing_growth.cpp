@@ -6,6 +6,7 @@
 
 #include "boundary/fixed_walls.hpp"
 #include "detection/contact_detector.hpp"
+#include "drivers/setup_monitor.hpp"
 #include "friction/coulomb_law.hpp"
 #include "solver/time_stepper.hpp"
 
@@ -57,7 +58,11 @@ GrowthReport grow_to_full_size(World& world, std::size_t first, double initial_s
   FixedWalls walls(frictionless);
 
   GrowthReport report;
+  // Progress in log(scale): each inflation multiplies it by kInflationFactor.
+  const double growth = std::log(1.0 / initial_scale);
   for (double scale = initial_scale; scale < 1.0;) {
+    setup_pass("growing the packing",
+               growth > 0.0 ? std::log(scale / initial_scale) / growth : 1.0);
     scale = std::min(1.0, scale * kInflationFactor);
     for (std::size_t i = first; i < b.size(); ++i) b.radius[i] = scale * final_radius[i];
     report.max_overlap = project_out_overlaps(world, projector, walls);
@@ -65,6 +70,8 @@ GrowthReport grow_to_full_size(World& world, std::size_t first, double initial_s
   }
   while (report.max_overlap > kPackingOverlapTolerance * r_min &&
          report.relaxation_steps < kMaxFinalRelaxations) {
+    setup_pass("relaxing the packing",
+               static_cast<double>(report.relaxation_steps) / kMaxFinalRelaxations);
     report.max_overlap = project_out_overlaps(world, projector, walls);
     ++report.relaxation_steps;
   }

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <optional>
 
+#include "drivers/setup_monitor.hpp"
 #include "drivers/shear_cell.hpp"
 #include "io/atomic_file.hpp"
 #include "io/config_compare.hpp"
@@ -100,9 +101,28 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
   std::filesystem::create_directories(out);
 
   const bool resuming = options.resume && std::filesystem::exists(checkpoint);
-  ShearCell cell = resuming                      ? resumed(config, out)
-                   : !options.start_from.empty() ? continued(config, options.start_from)
-                                                 : ShearCell(config);
+  const bool progress = !options.run.quiet && isatty(STDERR_FILENO);
+  ShearCell cell = [&] {
+    // A large cell's set-up takes a while: shown on a terminal, and stopped by
+    // the stop flag (SetupInterrupted; nothing written yet but config-free
+    // folders).
+    auto last_shown = std::chrono::steady_clock::now();
+    bool shown = false;
+    const ScopedSetupMonitor monitor(
+        {.stop = options.stop_requested, .progress = [&](std::string_view stage, double f) {
+           if (!progress ||
+               std::chrono::steady_clock::now() - last_shown < std::chrono::milliseconds(500))
+             return;
+           std::cerr << fmt::format("\rsetting up: {}, {:.0f}%   ", stage, 100.0 * f) << std::flush;
+           last_shown = std::chrono::steady_clock::now();
+           shown = true;
+         }});
+    ShearCell built = resuming                      ? resumed(config, out)
+                      : !options.start_from.empty() ? continued(config, options.start_from)
+                                                    : ShearCell(config);
+    if (shown) std::cerr << "\r\033[K" << std::flush;
+    return built;
+  }();
   const double build_s = seconds_since(start);
   const double strain_at_start = cell.state().strain;
   if (options.resume && cell.done()) {
@@ -114,7 +134,6 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
   }
   write_file_atomically(out / "config.toml", resolved_toml(config));
 
-  const bool progress = !options.run.quiet && isatty(STDERR_FILENO);
   const auto report_fraction = [&] {
     if (options.progress != nullptr) options.progress->store(cell.fraction_done());
   };
