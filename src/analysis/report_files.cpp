@@ -157,6 +157,9 @@ std::string fits_json(const AnalysisReport& r) {
   j["units"] = units(r.input.units);
   j["model"] = "n - 1 = A * x^(-alpha), x = (phi_max - phi) / phi_max";
   j["settings"] = settings(r.settings);
+  // Rows left out under the table policy (io/table_rows.hpp), per file.
+  j["dropped_rows"] = r.input.dropped_rows;
+  j["dropped"] = r.input.dropped;
   Json samples = Json::object();
   for (const auto& s : r.samples) samples[s.sample] = sample_json(s);
   j["samples"] = samples;
