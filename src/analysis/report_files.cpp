@@ -7,6 +7,7 @@
 
 #include "dilatant/version.hpp"
 #include "io/atomic_file.hpp"
+#include "io/output_folder.hpp"
 
 namespace dilatant::analysis {
 namespace {
@@ -168,7 +169,7 @@ std::string fits_json(const AnalysisReport& r) {
 }
 
 void write_report_files(const AnalysisReport& report, const std::filesystem::path& dir) {
-  std::filesystem::create_directories(dir);
+  prepare_output_folder(dir);
   write_file_atomically(dir / "curves.csv", curves_csv(report));
   write_file_atomically(dir / "points.csv", points_csv(report));
   write_file_atomically(dir / "fits.json", fits_json(report));

@@ -11,6 +11,7 @@
 #include "io/atomic_file.hpp"
 #include "io/config_compare.hpp"
 #include "io/input_error.hpp"
+#include "io/output_folder.hpp"
 #include "io/text.hpp"
 #include "measure/run_cost.hpp"
 
@@ -86,12 +87,20 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
   const auto start = std::chrono::steady_clock::now();
   const auto& out = options.run.out_dir;
   const auto checkpoint = out / "checkpoint.bin";
-  std::filesystem::create_directories(out);
+  prepare_output_folder(out);
 
   const bool resuming = options.resume && std::filesystem::exists(checkpoint);
   ShearCell cell = resuming                      ? resumed(config, out)
                    : !options.start_from.empty() ? continued(config, options.start_from)
                                                  : ShearCell(config);
+  // A fresh run owns the folder's run files: an earlier run's snapshots and
+  // cell.pvd would otherwise stay beside the new results (issue 31). Only
+  // after the cell is built: --start-from may read this very folder.
+  if (!resuming)
+    remove_earlier_results(out,
+                           {"checkpoint.bin", "timeseries.csv", "velocity_profile.csv",
+                            "sommerfeld_hist.csv", "contacts.csv", "summary.json", "cell.pvd"},
+                           {{"snapshots", {"particles_", "contacts_"}}});
   const double build_s = seconds_since(start);
   const double strain_at_start = cell.state().strain;
   if (options.resume && cell.done()) {
