@@ -13,7 +13,8 @@ from .tables import read_table
 class AnalysisResult:
     """curves: curves.csv (one row per flow curve: Newtonian viscosity, onset,
     n with its interval, regime); points: points.csv (local slopes); fits:
-    fits.json (per sample n - 1 = A x^-alpha and phi_max; the collapse);
+    fits.json (per sample n - 1 = A x^-alpha and phi_max; the collapse;
+    dropped_rows, the rows left out for a missing, zero or negative value);
     out: the folder (None with out=None)."""
 
     def __init__(self, folder, keep):

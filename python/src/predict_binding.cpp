@@ -11,6 +11,7 @@
 #include "bindings.hpp"
 #include "friction/defaults.hpp"
 #include "io/atomic_file.hpp"
+#include "io/output_folder.hpp"
 
 namespace py = pybind11;
 
@@ -36,7 +37,7 @@ py::object predict(double mu0, double phi, std::optional<double> s_c,
 
 void phase_diagram(const std::filesystem::path& out,
                    const std::optional<std::filesystem::path>& table) {
-  std::filesystem::create_directories(out);
+  prepare_output_folder(out);
   write_file_atomically(out / "phase_diagram.csv",
                         analysis::phase_diagram_csv(table_of(table), {}));
 }

@@ -52,6 +52,7 @@ py::dict run_cell(const Config& config, const std::filesystem::path& out, bool r
   std::atomic<double> fraction{0.0};
   CellRunOptions options{RunOptions{out, /*quiet=*/true}, resume, &stop};
   options.start_from = start_from;
+  options.stop_setup = &stop;
   options.progress = &fraction;
   const auto report = progress_reporter(progress, fraction);
   const CellOutcome outcome = run_interruptibly<CellOutcome>(

@@ -17,6 +17,7 @@
 #include "drivers/shear_cell_summary.hpp"
 #include "io/contacts_csv.hpp"
 #include "io/input_error.hpp"
+#include "io/output_folder.hpp"
 #include "stepping.hpp"
 
 namespace py = pybind11;
@@ -135,7 +136,7 @@ void bind_shear_cell(py::module_& m) {
       .def(
           "write_results",
           [](const ShearCell& c, const std::filesystem::path& out) {
-            std::filesystem::create_directories(out);
+            prepare_output_folder(out);
             c.write_results(out, c.cost());
           },
           py::arg("out"),

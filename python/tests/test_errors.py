@@ -84,3 +84,20 @@ def test_bad_analysis_and_prediction_input(tmp_path):
     bad.write_text("shear_rate,viscosity\n1,x\n")
     with pytest.raises(dilatant.ConfigError, match="curve.csv"):
         dilatant.analyze(bad)
+
+
+def test_output_folder_errors_are_the_built_in_os_errors(cli, tiny_file, tmp_path):
+    """A folder that cannot be used raises what os.makedirs would (issue 31,
+    item 7), with the CLI's line (exit 2); once a RuntimeError."""
+    blocker = tmp_path / "a-file"
+    blocker.write_text("not a folder\n")
+    expected = cli_message(cli, tiny_file, "--out", blocker)
+    with pytest.raises(FileExistsError) as error:
+        dilatant.run(tiny_file, out=blocker)
+    assert expected in str(error.value)
+    assert "cannot use as the output folder: a file is there" in str(error.value)
+    with pytest.raises(NotADirectoryError, match="cannot create the output folder"):
+        dilatant.run(tiny_file, out=blocker / "sub")
+    with pytest.raises(FileExistsError):
+        dilatant.phase_diagram(blocker, plots=False)
+    assert issubclass(FileExistsError, OSError)

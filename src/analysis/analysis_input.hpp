@@ -20,6 +20,16 @@ struct AnalysisInput {
   std::vector<FlowCurve> curves;
   std::vector<std::string> samples;       // in order of first appearance
   std::map<std::string, double> phi_max;  // measured values, per sample (manifest only)
+  // Rows dropped for a missing, zero or negative value (io/table_rows.hpp):
+  // their count, and per file that had any, "<file>: <which lines and why>".
+  std::size_t dropped_rows = 0;
+  std::vector<std::string> dropped;
+
+  void note_dropped(const std::string& file, std::size_t rows, const std::string& summary) {
+    if (rows == 0) return;
+    dropped_rows += rows;
+    dropped.push_back(file + ": " + summary);
+  }
 };
 
 // A path ending in .toml is a manifest; a CSV whose header names phi, mu0,

@@ -12,11 +12,13 @@
 #include "analysis/column_names.hpp"
 #include "analysis/delimited_text.hpp"
 #include "io/input_error.hpp"
+#include "io/table_rows.hpp"
 
 namespace dilatant::analysis {
 namespace {
 
 constexpr std::size_t kQuantities = 3;
+// The median check of units: a mislabelled unit is a factor of 10 or more.
 constexpr double kConsistencyTolerance = 0.10;
 
 std::size_t index(Quantity q) { return static_cast<std::size_t>(q); }
@@ -30,6 +32,7 @@ struct Column {
 struct Table {
   std::size_t header_line = 0;  // 1-based
   char separator = ',';
+  std::size_t fields = 0;  // every row has as many (table_rows.hpp, rule 1)
   std::array<std::optional<Column>, kQuantities> columns;
 };
 
@@ -42,7 +45,7 @@ class FileReader {
     throw InputError(fmt::format("{}:{}: {}", name_, line, what));
   }
 
-  std::vector<FlowPoint> read() {
+  FlowCurveFile read() {
     if (std::all_of(lines_.begin(), lines_.end(), [](const auto& l) { return is_blank(l); }))
       fail(1, "empty file: expected a header naming shear rate, shear stress or viscosity");
     Table table = find_header();
@@ -52,7 +55,10 @@ class FileReader {
       if (table.columns[q]) convert_unit(table, static_cast<Quantity>(q));
     auto points = read_rows(table, next);
     check_consistency(table, points);
-    return in_ascending_stress(table, std::move(points));
+    for (const auto& v : viscosities_)
+      check_implied_value(name_, v.line, "viscosity", v.written, "shear stress / shear rate",
+                          v.implied, v.tolerance);
+    return {in_ascending_stress(table, std::move(points)), dropped_.count(), dropped_.summary()};
   }
 
  private:
@@ -82,6 +88,7 @@ class FileReader {
     t.header_line = at + 1;
     t.separator = detect_separator(lines_[at]);
     const auto fields = split_fields(lines_[at], t.separator);
+    t.fields = fields.size();
     for (std::size_t f = 0; f < fields.size(); ++f) {
       const Heading h = parse_heading(fields[f]);
       if (!h.quantity) continue;
@@ -105,10 +112,10 @@ class FileReader {
   bool read_units_row(Table& t, std::size_t i) {
     if (i >= lines_.size() || is_blank(lines_[i])) return false;
     const auto fields = split_fields(lines_[i], t.separator);
+    check_field_count(name_, i + 1, fields.size(), t.fields);
     for (const auto& c : t.columns) {
       if (!c) continue;
-      if (c->field >= fields.size() || fields[c->field].empty()) return false;
-      if (parse_number(fields[c->field])) return false;
+      if (fields[c->field].empty() || parse_number(fields[c->field])) return false;
     }
     for (auto& c : t.columns) {
       if (!c || !parse_heading(c->heading).unit.empty()) continue;
@@ -132,35 +139,34 @@ class FileReader {
     c.to_si = *factor;
   }
 
-  double value(std::size_t line, const std::vector<std::string>& fields, const Column& c) const {
-    if (c.field >= fields.size())
-      fail(line, fmt::format("column '{}' is missing in this row ({} fields, header has more)",
-                             c.heading, fields.size()));
+  // The value in SI, or nullopt when the row is dropped (table_rows.hpp, rule 2).
+  std::optional<double> value(std::size_t line, const std::vector<std::string>& fields,
+                              const Column& c) {
     const std::string& text = fields[c.field];
-    if (text.empty()) fail(line, fmt::format("column '{}': empty field", c.heading));
-    const auto v = parse_number(text);
-    if (!v) fail(line, fmt::format("column '{}': '{}' is not a number", c.heading, text));
-    if (!std::isfinite(*v))
-      fail(line, fmt::format("column '{}': '{}' is not a finite number", c.heading, text));
-    if (*v <= 0.0)
-      fail(line, fmt::format("column '{}': {} must be > 0 (flow curves are analysed in log-log; "
-                             "remove the row)",
-                             c.heading, text));
+    const auto v = dropped_.positive(name_, line, c.heading, text, parse_number(text));
+    if (!v) return std::nullopt;
     return *v * c.to_si;
   }
 
   // A line after the data that starts a second flow-curve table.
   bool is_second_table(const std::string& line) const { return recognised(line) >= 2; }
 
-  std::vector<FlowPoint> read_rows(const Table& t, std::size_t first) const {
+  std::vector<FlowPoint> read_rows(const Table& t, std::size_t first) {
     std::vector<FlowPoint> points;
     std::size_t i = first;
     for (; i < lines_.size() && !(is_blank(lines_[i]) && !points.empty()); ++i) {
       if (is_blank(lines_[i])) continue;
       const auto fields = split_fields(lines_[i], t.separator);
+      check_field_count(name_, i + 1, fields.size(), t.fields);
       std::array<double, kQuantities> v{};
-      for (std::size_t q = 0; q < kQuantities; ++q)
-        if (t.columns[q]) v[q] = value(i + 1, fields, *t.columns[q]);
+      bool kept = true;
+      for (std::size_t q = 0; q < kQuantities; ++q) {
+        if (!t.columns[q]) continue;
+        const auto x = value(i + 1, fields, *t.columns[q]);
+        kept = kept && x.has_value();
+        if (x) v[q] = *x;
+      }
+      if (!kept) continue;
       FlowPoint p;
       p.line = i + 1;
       const auto has = [&](Quantity q) { return t.columns[index(q)].has_value(); };
@@ -170,6 +176,15 @@ class FileReader {
       p.shear_rate = has(Quantity::ShearRate) ? rate : stress / eta;
       p.shear_stress = has(Quantity::ShearStress) ? stress : eta * rate;
       p.viscosity = has(Quantity::Viscosity) ? eta : stress / rate;
+      if (has(Quantity::ShearRate) && has(Quantity::ShearStress) && has(Quantity::Viscosity)) {
+        const auto written = [&](Quantity q) {
+          return written_resolution(fields[t.columns[index(q)]->field]);
+        };
+        viscosities_.push_back(
+            {p.line, eta, stress / rate,
+             implied_value_tolerance(written(Quantity::Viscosity), written(Quantity::ShearRate),
+                                     written(Quantity::ShearStress))});
+      }
       points.push_back(p);
     }
     for (; i < lines_.size(); ++i)
@@ -177,8 +192,9 @@ class FileReader {
         fail(i + 1, "a second flow-curve table: one curve per file (split the file)");
     if (points.size() < kMinCurvePoints)
       fail(points.empty() ? t.header_line : points.back().line,
-           fmt::format("only {} data point{} after the header; a flow curve needs at least {}",
-                       points.size(), points.size() == 1 ? "" : "s", kMinCurvePoints));
+           fmt::format("only {} data point{} after the header; a flow curve needs at least {}{}",
+                       points.size(), points.size() == 1 ? "" : "s", kMinCurvePoints,
+                       dropped_.count() == 0 ? "" : " (" + dropped_.summary() + ")"));
     return points;
   }
 
@@ -199,17 +215,35 @@ class FileReader {
   // The ramp variable must be strictly monotonic; the result ascends in stress.
   std::vector<FlowPoint> in_ascending_stress(const Table& t, std::vector<FlowPoint> points) const {
     const bool by_stress = t.columns[index(Quantity::ShearStress)].has_value();
-    const auto ramp = [&](const FlowPoint& p) { return by_stress ? p.shear_stress : p.shear_rate; };
+    const auto ramp = [&](std::size_t k) {
+      return by_stress ? points[k].shear_stress : points[k].shear_rate;
+    };
     const std::string_view what = by_stress ? "shear stress" : "shear rate";
-    const bool descending = ramp(points[1]) < ramp(points[0]);
+    // The ramp's direction is that of most of its steps (first to last on a
+    // tie): one stray point, even the first, does not turn the ramp around.
+    std::ptrdiff_t up = 0;
+    for (std::size_t k = 1; k < points.size(); ++k) up += ramp(k) > ramp(k - 1) ? 1 : -1;
+    const bool descending = up < 0 || (up == 0 && ramp(points.size() - 1) < ramp(0));
+    const auto continues = [&](std::size_t a, std::size_t b) {
+      return descending ? ramp(b) < ramp(a) : ramp(b) > ramp(a);
+    };
     for (std::size_t k = 1; k < points.size(); ++k) {
-      const double prev = ramp(points[k - 1]), cur = ramp(points[k]);
-      if (descending ? cur < prev : cur > prev) continue;
-      fail(points[k].line,
-           fmt::format("{} {:.6g} does not continue the {} ramp (previous point {:.6g} on line "
-                       "{}): unsorted or repeated data",
-                       what, cur, descending ? "descending" : "ascending", prev,
-                       points[k - 1].line));
+      if (continues(k - 1, k)) continue;
+      // Points k-1 and k are out of order: the stray one is k-1 when the ramp
+      // goes on without it (k-2 -> k) but not without k (k-1 -> k+1), as a
+      // spike is; else k (a point that falls back, or repeats).
+      const bool without_earlier = k < 2 || continues(k - 2, k);
+      const bool without_later = k + 1 == points.size() || continues(k - 1, k + 1);
+      const std::size_t bad = without_earlier && !without_later ? k - 1 : k;
+      const auto neighbour = [&](std::size_t n) {
+        return fmt::format("{:.6g} on line {}", ramp(n), points[n].line);
+      };
+      std::string around = bad > 0 ? "after " + neighbour(bad - 1) : "";
+      if (bad + 1 < points.size())
+        around += (around.empty() ? "before " : ", before ") + neighbour(bad + 1);
+      fail(points[bad].line,
+           fmt::format("{} {:.6g} breaks the {} ramp ({}): unsorted or repeated data", what,
+                       ramp(bad), descending ? "descending" : "ascending", around));
     }
     if (descending) std::reverse(points.begin(), points.end());
     if (!by_stress)
@@ -222,11 +256,18 @@ class FileReader {
   std::vector<std::string> lines_;
   std::map<std::size_t, std::string> unit_row_;  // field -> unit from the units row
   std::size_t unit_line_ = 0;
+  DroppedRows dropped_;
+  // A row's viscosity against its stress / rate, checked after the units.
+  struct ViscosityCheck {
+    std::size_t line;
+    double written, implied, tolerance;
+  };
+  std::vector<ViscosityCheck> viscosities_;
 };
 
 }  // namespace
 
-std::vector<FlowPoint> read_flow_curve_file(const std::filesystem::path& file) {
+FlowCurveFile read_flow_curve_file(const std::filesystem::path& file) {
   return FileReader(file).read();
 }
 

@@ -12,11 +12,17 @@
 // Two of the three quantities are needed; the third follows from
 // eta = tau / gamma_dot. When all three are given they must agree (median of
 // eta * gamma_dot / tau within 10% of 1): a disagreement means a mislabelled
-// unit. Values are converted to SI. Every value must be a finite number > 0
-// (the analysis is in log-log), there must be at least 3 points, and the ramp
-// variable (stress, or rate when no stress column) must be strictly monotonic,
-// ascending or descending. Any violation is an InputError "file:line: problem".
+// unit; then each row's viscosity must agree with its stress / rate within
+// what the written digits allow (io/table_rows.hpp, rule 4). Values are
+// converted to SI. Rows follow the policy of every table (io/table_rows.hpp):
+// a row with another field count than the header is an error; a row with a
+// missing, zero or negative value is dropped and counted (the analysis is in
+// log-log; instruments write zero stress at a step's start). There must be at
+// least 3 points, and the ramp variable (stress, or rate when no stress
+// column) must be strictly monotonic, ascending or descending; a point that
+// breaks it is named. Any violation is an InputError "file:line: problem".
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "analysis/flow_curve.hpp"
@@ -25,7 +31,12 @@ namespace dilatant::analysis {
 
 inline constexpr std::size_t kMinCurvePoints = 3;
 
-// The points in ascending shear stress, in SI units.
-std::vector<FlowPoint> read_flow_curve_file(const std::filesystem::path& file);
+struct FlowCurveFile {
+  std::vector<FlowPoint> points;  // ascending shear stress, SI units
+  std::size_t dropped_rows = 0;   // rows with a missing, zero or negative value
+  std::string dropped;            // DroppedRows::summary(): which lines and why; "" if none
+};
+
+FlowCurveFile read_flow_curve_file(const std::filesystem::path& file);
 
 }  // namespace dilatant::analysis

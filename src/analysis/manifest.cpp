@@ -41,7 +41,8 @@ class ManifestReader {
     if (array == nullptr || !array->is_array_of_tables())
       fail(curves, "curve: expected an array of tables ([[curve]])");
     for (std::size_t i = 0; i < array->size(); ++i)
-      input.curves.push_back(read_curve(*array->get(i)->as_table(), fmt::format("curve[{}]", i)));
+      input.curves.push_back(
+          read_curve(*array->get(i)->as_table(), fmt::format("curve[{}]", i), input));
     for (const auto& c : input.curves)
       if (std::find(input.samples.begin(), input.samples.end(), c.sample) == input.samples.end())
         input.samples.push_back(c.sample);
@@ -86,7 +87,7 @@ class ManifestReader {
     return phi;
   }
 
-  FlowCurve read_curve(const toml::table& t, const std::string& path) const {
+  FlowCurve read_curve(const toml::table& t, const std::string& path, AnalysisInput& input) const {
     reject_unknown(t, path, {"file", "sample", "phi", "window_stress"});
     FlowCurve c;
     const toml::node& file = require(t, path, "file");
@@ -102,7 +103,9 @@ class ManifestReader {
                                 path, c.sample));
     c.phi = volume_fraction(require(t, path, "phi"), path + ".phi");
     if (const toml::node* w = t.get("window_stress")) c.window = read_window(*w, path);
-    c.points = read_flow_curve_file(data);
+    FlowCurveFile read = read_flow_curve_file(data);
+    c.points = std::move(read.points);
+    input.note_dropped(c.source, read.dropped_rows, read.dropped);
     return c;
   }
 

@@ -7,6 +7,7 @@
 
 #include "analysis/delimited_text.hpp"
 #include "io/input_error.hpp"
+#include "io/table_rows.hpp"
 
 namespace dilatant::analysis {
 
@@ -20,6 +21,7 @@ NumericCsv::NumericCsv(std::vector<std::string> lines, std::string source)
   for (++k; k < lines.size(); ++k) {
     if (is_blank(lines[k])) continue;
     rows_.push_back(split_fields(lines[k], ','));
+    check_field_count(source_, k + 1, rows_.back().size(), header_.size());
     line_numbers_.push_back(k + 1);
   }
 }

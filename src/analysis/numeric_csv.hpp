@@ -2,7 +2,9 @@
 // A small comma-separated table of numbers with a header line, as the data
 // files shipped in data/ are written (data/jamming/*.csv): columns looked up
 // by name, cells read as finite numbers, every error naming the source and
-// its line. Blank lines are skipped.
+// its line. Blank lines are skipped; a row with another field count than the
+// header is an error (io/table_rows.hpp, rule 1). Its tables define a model,
+// not measurements: every value must be read, none is dropped.
 #include <cstddef>
 #include <string>
 #include <string_view>

@@ -7,6 +7,7 @@
 
 #include "dilatant/version.hpp"
 #include "io/atomic_file.hpp"
+#include "io/output_folder.hpp"
 
 namespace dilatant::analysis {
 namespace {
@@ -157,6 +158,9 @@ std::string fits_json(const AnalysisReport& r) {
   j["units"] = units(r.input.units);
   j["model"] = "n - 1 = A * x^(-alpha), x = (phi_max - phi) / phi_max";
   j["settings"] = settings(r.settings);
+  // Rows left out under the table policy (io/table_rows.hpp), per file.
+  j["dropped_rows"] = r.input.dropped_rows;
+  j["dropped"] = r.input.dropped;
   Json samples = Json::object();
   for (const auto& s : r.samples) samples[s.sample] = sample_json(s);
   j["samples"] = samples;
@@ -165,7 +169,7 @@ std::string fits_json(const AnalysisReport& r) {
 }
 
 void write_report_files(const AnalysisReport& report, const std::filesystem::path& dir) {
-  std::filesystem::create_directories(dir);
+  prepare_output_folder(dir);
   write_file_atomically(dir / "curves.csv", curves_csv(report));
   write_file_atomically(dir / "points.csv", points_csv(report));
   write_file_atomically(dir / "fits.json", fits_json(report));

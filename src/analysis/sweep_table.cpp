@@ -14,6 +14,7 @@
 #include "analysis/analysis_input.hpp"
 #include "analysis/delimited_text.hpp"
 #include "io/input_error.hpp"
+#include "io/table_rows.hpp"
 
 namespace dilatant::analysis {
 namespace {
@@ -28,6 +29,7 @@ struct Columns {
   std::optional<std::size_t> rate_err;
   std::optional<std::size_t> status;  // `dilatant sweep`: done | failed | pending
   std::optional<std::size_t> sample;  // `dilatant sweep`: the curve's label
+  std::optional<std::size_t> eta;     // checked against shear_stress / gamma_dot
   std::size_t count;
 };
 
@@ -53,7 +55,7 @@ class SweepReader {
                             name));
     return Columns{*find("phi"),   *find("mu0"),    *find("shear_stress"), *find("gamma_dot"),
                    *find("valid"), *find("jammed"), find("gamma_dot_err"), find("status"),
-                   find("sample"), fields.size()};
+                   find("sample"), find("eta"),     fields.size()};
   }
 
   double number(std::size_t line, const std::vector<std::string>& f, std::size_t column,
@@ -82,11 +84,17 @@ class SweepReader {
     FlowPoint point;
   };
 
-  // nullopt for a point of a sweep that has no result (status failed or pending).
-  std::optional<Row> row(std::size_t line, const std::string& text, const Columns& c) const {
+  // A measured value that must be > 0, or nullopt: the row is dropped.
+  std::optional<double> positive(std::size_t line, const std::vector<std::string>& f,
+                                 std::size_t column, std::string_view name) {
+    return dropped_.positive(name_, line, name, f[column], parse_number(f[column]));
+  }
+
+  // nullopt for a point of a sweep that has no result (status failed or
+  // pending), or a row dropped for a missing, zero or negative value.
+  std::optional<Row> row(std::size_t line, const std::string& text, const Columns& c) {
     const auto f = split_fields(text, ',');
-    if (f.size() != c.count)
-      fail(line, fmt::format("expected {} fields (as in the header), got {}", c.count, f.size()));
+    check_field_count(name_, line, f.size(), c.count);
     if (c.status && f[*c.status] != "done") return std::nullopt;
     Row r{};
     r.phi = number(line, f, c.phi, "phi");
@@ -97,15 +105,15 @@ class SweepReader {
     r.sample = c.sample && !f[*c.sample].empty() ? f[*c.sample] : fmt::format("mu0={}", r.mu0);
     FlowPoint& p = r.point;
     p.line = line;
-    p.shear_stress = number(line, f, c.stress, "shear_stress");
-    if (!(p.shear_stress > 0.0))
-      fail(line, fmt::format("column 'shear_stress': {} must be > 0", p.shear_stress));
     p.valid = boolean(line, f, c.valid, "valid");
     p.jammed = boolean(line, f, c.jammed, "jammed");
-    p.shear_rate = number(line, f, c.rate, "gamma_dot");
-    if (p.jammed ? p.shear_rate < 0.0 : !(p.shear_rate > 0.0))
-      fail(line, fmt::format("column 'gamma_dot': {} must be > 0 for a flowing row ({})",
-                             p.shear_rate, p.jammed ? "or 0 when jammed" : "jammed = false"));
+    const auto stress = positive(line, f, c.stress, "shear_stress");
+    // A jammed cell stopped: its rate 0 is a result, not a missing value.
+    const bool stopped = p.jammed && parse_number(f[c.rate]) == 0.0;
+    const auto rate = stopped ? std::optional(0.0) : positive(line, f, c.rate, "gamma_dot");
+    if (!stress || !rate) return std::nullopt;
+    p.shear_stress = *stress;
+    p.shear_rate = *rate;
     if (c.rate_err && !f[*c.rate_err].empty()) {
       p.shear_rate_err = number(line, f, *c.rate_err, "gamma_dot_err");
       if (p.shear_rate_err < 0.0)
@@ -113,11 +121,21 @@ class SweepReader {
     }
     p.viscosity = p.shear_rate > 0.0 ? p.shear_stress / p.shear_rate
                                      : std::numeric_limits<double>::quiet_NaN();
+    if (c.eta && p.shear_rate > 0.0 && !f[*c.eta].empty()) {
+      const double eta = number(line, f, *c.eta, "eta");
+      check_implied_value(
+          name_, line, "eta", eta, "shear_stress / gamma_dot", p.viscosity,
+          implied_value_tolerance(written_resolution(f[*c.eta]), written_resolution(f[c.rate]),
+                                  written_resolution(f[c.stress])));
+    }
     return r;
   }
 
+  const DroppedRows& dropped() const { return dropped_; }
+
  private:
   std::string name_;
+  DroppedRows dropped_;
 };
 
 }  // namespace
@@ -155,7 +173,10 @@ AnalysisInput read_sweep_table(const std::filesystem::path& table) {
     input.curves[it->second].points.push_back(r.point);
   }
   if (rows == 0) reader.fail(1, "no data rows after the header");
-  if (input.curves.empty()) reader.fail(1, "no finished point (status done) in the table");
+  input.note_dropped(name, reader.dropped().count(), reader.dropped().summary());
+  if (input.curves.empty())
+    reader.fail(1, reader.dropped().count() == 0 ? "no finished point (status done) in the table"
+                                                 : "no point left: " + reader.dropped().summary());
   // Simulations are independent runs, listed in any order: sort by stress. Two
   // runs at the same stress of one curve would be two answers for one point.
   for (auto& c : input.curves) {

@@ -72,6 +72,8 @@ std::string with_error(const analysis::Estimate& e, const char* format) {
 void print_summary(const analysis::AnalysisReport& r, const std::filesystem::path& out) {
   std::cout << fmt::format("dilatant: analysed {} flow curves of {} samples; results in {}\n",
                            r.curves.size(), r.samples.size(), out.string());
+  // Dropped rows are said where the user looks, not only in fits.json.
+  for (const auto& d : r.input.dropped) std::cout << "  " << d << "\n";
   std::cout << fmt::format("  {:<12} {:>6} {:>4} {:>4}  {:<22} {:<18} {:<16}\n", "sample", "curves",
                            "cst", "dst", "phi_max", "A", "alpha");
   for (const auto& s : r.samples) {

@@ -14,6 +14,7 @@
 #include "friction/defaults.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
+#include "io/output_folder.hpp"
 
 namespace dilatant {
 
@@ -67,7 +68,7 @@ analysis::JammingTable load_table(const std::string& file) {
 
 int draw_grid(const PredictCommandArgs& args) {
   const std::filesystem::path out = args.out.empty() ? "out/predict" : args.out;
-  std::filesystem::create_directories(out);
+  prepare_output_folder(out);
   write_file_atomically(out / "phase_diagram.csv",
                         analysis::phase_diagram_csv(load_table(args.table), {}));
   if (!args.no_plots) {

@@ -97,6 +97,7 @@ int run_cell(const Config& config, const RunOptions& options, bool resume,
              const std::string& start_from, const StepDumpSettings& dumps) {
   // SIGINT/SIGTERM: finish the step, write a checkpoint, exit cleanly.
   CellRunOptions cell_options{options, resume, stop_on_interrupt()};
+  cell_options.stop_setup = cell_options.stop_requested;  // Ctrl-C during a long set-up
   cell_options.start_from = start_from;
   cell_options.dumps = dumps;
   CellOutcome outcome;

@@ -8,6 +8,7 @@
 #include "drivers/scene.hpp"
 #include "io/atomic_file.hpp"
 #include "io/contacts_csv.hpp"
+#include "io/output_folder.hpp"
 #include "io/trajectory_writer.hpp"
 #include "measure/run_cost.hpp"
 
@@ -19,7 +20,7 @@ SceneOutcome run_scene(const Config& config, const RunOptions& options) {
   const double dt = scene.dt();
   const double frame_interval = config.scene()->trajectory_interval;
 
-  std::filesystem::create_directories(options.out_dir);
+  prepare_output_folder(options.out_dir);
   write_file_atomically(options.out_dir / "config.toml", resolved_toml(config));
   TrajectoryWriter trajectory(options.out_dir / "trajectory.csv");
   AtomicFileWriter timeseries(options.out_dir / "timeseries.csv");

@@ -13,6 +13,7 @@
 #include "dilatant/version.hpp"
 #include "drivers/model_setup.hpp"
 #include "io/atomic_file.hpp"
+#include "io/output_folder.hpp"
 #include "measure/run_cost.hpp"
 
 namespace dilatant {
@@ -100,7 +101,7 @@ SedimentSettings sediment_settings(const Config& config, int index) {
 SedimentOutcome run_sediment(const Config& config, const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const SedimentConfig& c = *config.sediment();
-  std::filesystem::create_directories(options.out_dir);
+  prepare_output_folder(options.out_dir);
   write_file_atomically(options.out_dir / "config.toml", resolved_toml(config));
 
   std::vector<Sample> samples;

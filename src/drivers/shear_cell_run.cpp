@@ -12,6 +12,7 @@
 #include "io/atomic_file.hpp"
 #include "io/config_compare.hpp"
 #include "io/input_error.hpp"
+#include "io/output_folder.hpp"
 #include "io/text.hpp"
 #include "measure/run_cost.hpp"
 
@@ -98,7 +99,7 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
   const auto start = std::chrono::steady_clock::now();
   const auto& out = options.run.out_dir;
   const auto checkpoint = out / "checkpoint.bin";
-  std::filesystem::create_directories(out);
+  prepare_output_folder(out);
 
   const bool resuming = options.resume && std::filesystem::exists(checkpoint);
   const bool progress = !options.run.quiet && isatty(STDERR_FILENO);
@@ -109,7 +110,7 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
     auto last_shown = std::chrono::steady_clock::now();
     bool shown = false;
     const ScopedSetupMonitor monitor(
-        {.stop = options.stop_requested, .progress = [&](std::string_view stage, double f) {
+        {.stop = options.stop_setup, .progress = [&](std::string_view stage, double f) {
            if (!progress ||
                std::chrono::steady_clock::now() - last_shown < std::chrono::milliseconds(500))
              return;
@@ -123,6 +124,14 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
     if (shown) std::cerr << "\r\033[K" << std::flush;
     return built;
   }();
+  // A fresh run owns the folder's run files: an earlier run's snapshots and
+  // cell.pvd would otherwise stay beside the new results (issue 31). Only
+  // after the cell is built: --start-from may read this very folder.
+  if (!resuming)
+    remove_earlier_results(out,
+                           {"checkpoint.bin", "timeseries.csv", "velocity_profile.csv",
+                            "sommerfeld_hist.csv", "contacts.csv", "summary.json", "cell.pvd"},
+                           {{"snapshots", {"particles_", "contacts_"}}});
   const double build_s = seconds_since(start);
   const double strain_at_start = cell.state().strain;
   if (options.resume && cell.done()) {

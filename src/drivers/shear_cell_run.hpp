@@ -29,6 +29,10 @@ struct CellRunOptions {
   bool resume = false;
   // Set asynchronously (SIGINT/SIGTERM): write a checkpoint and stop.
   const std::atomic<bool>* stop_requested = nullptr;
+  // Set asynchronously during the set-up: abandon it (SetupInterrupted,
+  // drivers/setup_monitor.hpp). The CLI and Python pass their stop flag here
+  // too; a sweep does not (a halted sweep lets its points reach a checkpoint).
+  const std::atomic<bool>* stop_setup = nullptr;
   // Continuation along a flow curve (a rheometer ramp): instead of a new
   // packing, start from the final state in this checkpoint of another run of
   // the same cell (the neighbouring point of the curve). Particles, walls,

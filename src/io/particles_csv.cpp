@@ -15,6 +15,7 @@
 #include <unordered_map>
 
 #include "io/input_error.hpp"
+#include "io/table_rows.hpp"
 #include "io/text.hpp"
 
 namespace dilatant {
@@ -68,9 +69,7 @@ class Reader {
 
   ParticleRecord row(std::string_view line, const std::vector<std::size_t>& columns) const {
     const auto fields = split(line);
-    if (fields.size() != columns.size())
-      fail(fmt::format("expected {} fields (as in the header), got {}", columns.size(),
-                       fields.size()));
+    check_field_count(file_, line_, fields.size(), columns.size());
     ParticleRecord p;
     for (std::size_t i = 0; i < fields.size(); ++i) assign(p, columns[i], fields[i]);
     if (!(p.radius > 0.0)) fail(fmt::format("column 'r': radius must be > 0, got {}", p.radius));

@@ -7,6 +7,7 @@
 
 #include "drivers/shear_cell_run.hpp"
 #include "io/atomic_file.hpp"
+#include "io/output_folder.hpp"
 #include "io/text.hpp"
 
 namespace dilatant::sweep {
@@ -48,6 +49,7 @@ std::size_t SweepWork::load_folders() {
   const auto& out = options_.out;
   // Every folder is compared before anything is written: a changed sweep is
   // refused as a whole.
+  prepare_output_folder(out);
   for (const auto& p : plan_.points) state_[p.index] = inspect_point_folder(p, out / p.folder);
   std::filesystem::create_directories(out / "points");
   write_file_atomically(out / "sweep.toml", resolved_sweep_toml(plan_));

@@ -64,6 +64,25 @@ TEST(SweepTable, GivesNPerPhiAndMu0AndTreatsJammingAsDst) {
   EXPECT_EQ(jammed.dst_evidence, DstEvidence::Jammed);
 }
 
+// Rows with a missing, zero or negative stress or rate are dropped and
+// counted (io/table_rows.hpp); a jammed row's rate 0 is a result and is kept.
+TEST(SweepTable, DropsRowsWithoutAPositiveStressOrRateAndCountsThem) {
+  test::TempDir dir;
+  const auto file =
+      dir.write("flowcurves.csv",
+                "phi,mu0,shear_stress,gamma_dot,gamma_dot_err,eta,valid,jammed\n"
+                "0.5,0.1,1,1,0,1,true,false\n0.5,0.1,0,1,0,,true,false\n0.5,0.1,2,,0,,true,false\n"
+                "0.5,0.1,4,-1,0,,true,false\n0.5,0.1,8,0,0,,true,true\n");
+  const AnalysisInput in = read_sweep_table(file);
+  ASSERT_EQ(in.curves.size(), 1u);
+  EXPECT_EQ(in.curves[0].points.size(), 2u);
+  EXPECT_EQ(in.dropped_rows, 3u);
+  ASSERT_EQ(in.dropped.size(), 1u);
+  EXPECT_EQ(in.dropped[0], file.string() +
+                               ": 3 rows dropped (missing value: line 4; zero or negative "
+                               "value: lines 3, 5)");
+}
+
 struct BadSweep {
   std::string name;
   std::string text;
@@ -79,15 +98,21 @@ std::vector<BadSweep> bad_sweeps() {
       {"MissingColumn", "phi,mu0,shear_stress,gamma_dot,valid\n0.5,0.1,1,1,true\n", 1,
        "missing column 'jammed'"},
       {"NoRows", h, 1, "no data rows"},
-      {"ZeroRateWithoutJamming", h + "0.5,0.1,1,0,0,,true,false\n", 2, "must be > 0"},
+      // A zero rate of a flowing row drops it (io/table_rows.hpp): none is left.
+      {"ZeroRateWithoutJamming", h + "0.5,0.1,1,0,0,,true,false\n", 1,
+       "no point left: 1 row dropped (zero or negative value: line 2)"},
       {"BadBoolean", h + "0.5,0.1,1,1,0,1,yes,false\n", 2, "'yes' is not true or false"},
       {"TextInANumber", h + "0.5,0.1,1,1,0,1,true,false\n0.5,0.1,x,1,0,1,true,false\n", 3,
        "'x' is not a number"},
       {"RepeatedStress", h + "0.5,0.1,1,1,0,1,true,false\n0.5,0.1,1,2,0,1,true,false\n", 3,
        "repeats line 2"},
-      {"WrongFieldCount", h + "0.5,0.1,1,1,0,1,true\n", 2, "expected 8 fields"},
+      {"WrongFieldCount", h + "0.5,0.1,1,1,0,1,true\n", 2, "7 fields, the header has 8"},
       {"PhiOutOfRange", h + "0.8,0.1,1,1,0,1,true,false\n", 2, "must be in (0, 0.74)"},
-      {"NaN", h + "0.5,0.1,nan,1,0,1,true,false\n", 2, "not a finite number"},
+      {"NaN", h + "0.5,0.1,nan,1,0,1,true,false\n", 1, "missing value: line 2"},
+      {"Infinite", h + "0.5,0.1,inf,1,0,1,true,false\n", 2, "not a finite number"},
+      // eta 2.50 where shear_stress / gamma_dot = 2.00: 25%, its digits allow 1.6%.
+      {"EtaDisagrees", h + "0.5,0.1,1.00,0.500,0,2.50,true,false\n", 2,
+       "eta 2.5 disagrees with shear_stress / gamma_dot = 2 by 25%"},
   };
 }
 

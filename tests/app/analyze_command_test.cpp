@@ -128,17 +128,52 @@ TEST_P(AnalyzeCommandBad, ExitsWith2AndOneLineNamingFileAndLine) {
 
 INSTANTIATE_TEST_SUITE_P(
     AnalyzeCommand, AnalyzeCommandBad,
-    ::testing::Values(
-        BadInput{"MissingColumn", "Shear Rate [1/s],Time [s]\n1,1\n2,2\n3,3\n", 1,
-                 "missing column"},
-        BadInput{"TextInANumber", "shear_rate,shear_stress\n1,1\n2,two\n3,3\n", 3,
-                 "'two' is not a number"},
-        BadInput{"EmptyFile", "", 1, "empty file"},
-        BadInput{"SinglePoint", "shear_rate,shear_stress\n1,1\n", 2, "only 1 data point"},
-        BadInput{"UnsortedData", "shear_rate,shear_stress\n1,1\n3,3\n2,2\n", 4,
-                 "does not continue"},
-        BadInput{"NaN", "shear_rate,shear_stress\n1,1\nNaN,2\n3,3\n", 3, "not a finite number"}),
+    ::testing::Values(BadInput{"MissingColumn", "Shear Rate [1/s],Time [s]\n1,1\n2,2\n3,3\n", 1,
+                               "missing column"},
+                      BadInput{"TextInANumber", "shear_rate,shear_stress\n1,1\n2,two\n3,3\n", 3,
+                               "'two' is not a number"},
+                      BadInput{"EmptyFile", "", 1, "empty file"},
+                      BadInput{"SinglePoint", "shear_rate,shear_stress\n1,1\n", 2,
+                               "only 1 data point"},
+                      BadInput{"UnsortedData", "shear_rate,shear_stress\n1,1\n3,3\n2,2\n", 4,
+                               "breaks the ascending ramp"},
+                      // The point that breaks the ramp is named, not the next one (issue 31).
+                      BadInput{"Spike", "shear_rate,shear_stress\n1,1\n2,2\n9,9\n4,4\n5,5\n", 4,
+                               "shear stress 9 breaks the ascending ramp"},
+                      // A row with a field too many was once read as a point (issue 31).
+                      BadInput{"ExtraField", "shear_rate,shear_stress\n1,1\n2,2,7\n3,3\n4,4\n", 3,
+                               "3 fields, the header has 2"},
+                      BadInput{"ViscosityDisagrees",
+                               "shear_rate,shear_stress,viscosity\n1.00,1.00,1.00\n2.00,4.00,2.50\n"
+                               "3.00,9.00,3.00\n4.00,16.0,4.00\n",
+                               3, "viscosity 2.5 disagrees with shear stress / shear rate = 2"},
+                      BadInput{"Infinite", "shear_rate,shear_stress\n1,1\ninf,2\n3,3\n", 3,
+                               "not a finite number"}),
     [](const auto& p) { return p.param.name; });
+
+// An export with zero stress at each step's start and a failed reading
+// (issue 31): those rows are dropped, the curve analysed, and the count said
+// in the summary and in fits.json.
+TEST(AnalyzeCommand, RowsWithZeroOrMissingValuesAreDroppedAndCounted) {
+  test::CliDir dir;
+  std::string rows = read_text(kSource / "examples/analysis/A_0462.csv");
+  const auto second = rows.find('\n') + 1;
+  rows.insert(second, "0,0,0\n");                        // line 2: a step's start
+  rows.insert(rows.find('\n', second + 6) + 1, ",,\n");  // line 4: no reading
+  const fs::path data = dir.write("data.csv", rows);
+  const fs::path manifest =
+      dir.write("m.toml", "[[curve]]\nfile = \"data.csv\"\nsample = \"A\"\nphi = 0.462\n");
+  const fs::path out = dir.path() / "out";
+  const auto r = dir.run({"analyze", manifest.string(), "--out", out.string(), "--no-plots"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find(data.string() +
+                       ": 2 rows dropped (missing value: line 4; zero or negative value: line 2)"),
+            std::string::npos)
+      << r.out;
+  const auto fits = nlohmann::json::parse(read_text(out / "fits.json"));
+  EXPECT_EQ(fits["dropped_rows"], 2);
+  ASSERT_EQ(fits["dropped"].size(), 1u);
+}
 
 TEST(AnalyzeCommand, RefusesAnInputThatIsNeitherAManifestNorASweepAndBadOptions) {
   test::CliDir dir;

@@ -82,4 +82,19 @@ class CliDir : public TempDir {
   }
 };
 
+// `dilatant run` of a small cell for 0.03 strain without snapshots: about a
+// second. Later --set options override these.
+inline std::vector<std::string> small_cell_run() {
+  return {"run",
+          "--set",
+          "cell.size=[6.0, 5.0, 7.0]",
+          "--set",
+          "run.transient_strain=0.01",
+          "--set",
+          "run.strain=0.03",
+          "--set",
+          "run.snapshot_interval=0",
+          "-q"};
+}
+
 }  // namespace dilatant::test

@@ -1,4 +1,4 @@
-// A read-only output folder (issue 19, item 2): the run stops with exit 1 and
+// A read-only output folder (issue 19, item 2): the run stops with exit 2 and
 // one line naming the path and the reason, and the next run, with the folder
 // writable again, completes. Permission bits do not stop root, so as root the
 // run is started as `nobody` (setpriv, util-linux) from a copy of the
@@ -16,16 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::vector<std::string> kSmallRun = {"run",
-                                            "--set",
-                                            "cell.size=[6.0, 5.0, 7.0]",
-                                            "--set",
-                                            "run.transient_strain=0.01",
-                                            "--set",
-                                            "run.strain=0.03",
-                                            "--set",
-                                            "run.snapshot_interval=0",
-                                            "-q"};
+const std::vector<std::string> kSmallRun = test::small_cell_run();
 
 // r-x for everyone: the folder can be entered and listed, not written.
 constexpr fs::perms kReadOnly = fs::perms::owner_read | fs::perms::owner_exec |
@@ -51,7 +42,7 @@ class ReadOnlyOutput : public ::testing::Test {
     return dir_.run(args, "", launcher_, executable_.string());
   }
   static void expect_one_line_naming(const test::RunResult& r, const std::string& what) {
-    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_EQ(r.exit_code, 2) << r.err;  // bad input (issue 31, item 7)
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("Permission denied"), std::string::npos) << r.err;

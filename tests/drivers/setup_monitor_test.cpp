@@ -61,8 +61,9 @@ TEST(SetupMonitor, AStopRequestAbandonsTheSetUpAndWritesNoResults) {
   // Through the run loop (the CLI's path): the stop flag is the run's own.
   const auto out = std::filesystem::temp_directory_path() / "dilatant_setup_stop";
   std::filesystem::remove_all(out);
-  EXPECT_THROW(run_shear_cell(cell(), CellRunOptions{RunOptions{out, true}, false, &stop}),
-               SetupInterrupted);
+  CellRunOptions options{RunOptions{out, true}, false, &stop};
+  options.stop_setup = &stop;
+  EXPECT_THROW(run_shear_cell(cell(), options), SetupInterrupted);
   EXPECT_FALSE(std::filesystem::exists(out / "config.toml"));
   EXPECT_FALSE(std::filesystem::exists(out / "checkpoint.bin"));
   std::filesystem::remove_all(out);
