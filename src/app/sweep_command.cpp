@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <exception>
 #include <iostream>
@@ -11,6 +12,7 @@
 
 #include "app/plot_command.hpp"
 #include "app/stop_request.hpp"
+#include "drivers/model_setup.hpp"
 #include "io/input_error.hpp"
 #include "sweep/mpi_session.hpp"
 #include "sweep/sweep_plan.hpp"
@@ -136,6 +138,14 @@ int execute_sweep_command(const SweepCommandArgs& args) {
   options.jobs =
       on_ranks ? resolve_jobs_per_rank(args.jobs, plan.settings.jobs, mpi.ranks_on_this_node())
                : resolve_jobs(args.jobs, plan.settings.jobs);
+  if (!on_ranks && !args.quiet) {
+    // The points' solver threads (after the cap), the most any point asks.
+    int threads = 1;
+    for (const sweep::SweepPoint& p : plan.points)
+      threads = std::max(threads, make_solver_settings(p.config.solver).threads);
+    if (const std::string w = oversubscription_warning(options.jobs, threads); !w.empty())
+      std::cerr << w << "\n";
+  }
   options.show_progress = lead && !args.quiet && (args.progress || isatty(STDERR_FILENO));
   options.report_failures = lead && !args.quiet;
   // SIGINT/SIGTERM: the running points write a checkpoint and stop.

@@ -48,6 +48,16 @@ std::string thread_cap_warning(const SolverConfig& s) {
       s.threads, hardware_threads(), hardware_threads());
 }
 
+std::string oversubscription_warning(int jobs, int threads_per_job) {
+  const long asked = static_cast<long>(jobs) * threads_per_job;
+  if (jobs <= 1 || asked <= hardware_threads()) return "";
+  return fmt::format(
+      "dilatant: warning: {} points side by side with {} solver thread{} each ask for {} threads "
+      "on this machine's {}: every point runs slower than alone (lower --jobs or "
+      "solver.threads; results do not depend on either)",
+      jobs, threads_per_job, threads_per_job == 1 ? "" : "s", asked, hardware_threads());
+}
+
 SolverSettings make_solver_settings(const SolverConfig& s) {
   const int cores = hardware_threads();
   return SolverSettings{.convergence = s.convergence,

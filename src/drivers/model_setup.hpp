@@ -23,6 +23,11 @@ SolverSettings make_solver_settings(const SolverConfig& solver);
 int hardware_threads();
 // The line that says solver.threads was capped; empty when it was not.
 std::string thread_cap_warning(const SolverConfig& solver);
+
+// "" unless `jobs` runs side by side with `threads_per_job` solver threads
+// each ask for more threads than the machine has (a sweep); else one warning
+// line: each point then runs slower than alone.
+std::string oversubscription_warning(int jobs, int threads_per_job);
 // The residual's unit in a world under gravity, as a force
 // (TimeStepper::set_reference_force; docs/model.md "Convergence criterion"):
 // the heaviest free body's weight, whose impulse in one step is what gravity

@@ -30,6 +30,8 @@ std::string show(const std::string& v);
 
 // The source name given to override values when they are parsed.
 inline constexpr std::string_view kOverrideSource = "--set";
+// The source name of the built-in default cell (default_cell_config).
+inline constexpr std::string_view kBuiltInSource = "<built-in>";
 
 // Where a key is, for messages: "scene.toml:7: friction.mu0" for a key from the
 // file, "--set friction.mu0" for one from an override (parsed with source

@@ -131,13 +131,30 @@ void check_sphere_count(const Section& s, const Vec3& size, double estimate, int
                     estimate, section, limit));
 }
 
+// Whether the user wrote `key`: an override, or a line of their own file (the
+// built-in default cell's lines are ours: `--set run.strain=0` must be blamed
+// on run.strain, not on the built-in run.transient_strain).
+bool user_wrote(const Section& s, std::string_view key) {
+  const toml::node* n = s.find(key);
+  if (n == nullptr) return false;
+  const auto& src = n->source();
+  const bool override =
+      src.begin.line == 0 || (src.path && *src.path == config_detail::kOverrideSource);
+  return override || s.source() != config_detail::kBuiltInSource;
+}
+
 // Keys that constrain each other, checked once all are read. The message blames
 // the key the user wrote (the later one if both were written).
 void check_constraints(const std::function<Section(std::string_view)>& section, const Config& c) {
   if (const CellConfig* cell = c.cell()) {
     const Section s = section("cell");
-    check(s, "radius_max", cell->radius_max, cell->radius_max >= cell->radius_min,
-          fmt::format("must be >= cell.radius_min = {}", cell->radius_min));
+    const bool radii_ok = cell->radius_max >= cell->radius_min;
+    if (user_wrote(s, "radius_min") && !user_wrote(s, "radius_max"))
+      check(s, "radius_min", cell->radius_min, radii_ok,
+            fmt::format("must be <= cell.radius_max = {}", cell->radius_max));
+    else
+      check(s, "radius_max", cell->radius_max, radii_ok,
+            fmt::format("must be >= cell.radius_min = {}", cell->radius_min));
     // Periodic in x and y: a sphere must not meet its own image, and the cell
     // list needs at least 4 largest radii per periodic axis (as a scene's box).
     const double min_side = 4.0 * cell->radius_max;
@@ -154,7 +171,7 @@ void check_constraints(const std::function<Section(std::string_view)>& section, 
                        cell->max_spheres, "cell");
     const Section r = section("run");
     const bool ok = c.run.transient_strain < c.run.strain;
-    if (r.find("transient_strain") || !r.find("strain"))
+    if (user_wrote(r, "transient_strain") || !user_wrote(r, "strain"))
       check(r, "transient_strain", c.run.transient_strain, ok,
             fmt::format("must be < run.strain = {}", c.run.strain));
     else
@@ -290,7 +307,8 @@ Config default_cell_config(const std::vector<std::string>& overrides) {
       "[cell]\n"
       "[fluid]\nlambda = 100.0\n"
       "[run]\nstrain = 12.0\ntransient_strain = 6.0\n";
-  return parse_config(kBuiltIn, "<built-in>", std::filesystem::current_path(), overrides);
+  return parse_config(kBuiltIn, std::string(config_detail::kBuiltInSource),
+                      std::filesystem::current_path(), overrides);
 }
 
 }  // namespace dilatant

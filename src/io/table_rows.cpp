@@ -56,7 +56,7 @@ std::string DroppedRows::summary() const {
   if (lines_.empty()) return "";
   std::string kinds;
   for (const auto& [why, what] : {std::pair{Why::Missing, "missing value"},
-                                 std::pair{Why::NotPositive, "zero or negative value"}}) {
+                                  std::pair{Why::NotPositive, "zero or negative value"}}) {
     std::vector<std::size_t> lines;
     for (const auto& [line, w] : lines_)
       if (w == why) lines.push_back(line);

@@ -3,6 +3,7 @@
 // 0.3 s, silently): the engine uses at most the hardware threads
 // (drivers/model_setup.hpp make_solver_settings()), and the run says so in one
 // line, with the same results as a run that asked for that many.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <string>
@@ -50,6 +51,19 @@ TEST(ThreadCap, ARunAskingForTooManyThreadsWarnsOnceAndMatchesTheCappedRun) {
   EXPECT_EQ(capped.err.find("solver.threads"), std::string::npos) << capped.err;
   EXPECT_EQ(read_text(dir.path() / "many" / "timeseries.csv"),
             read_text(dir.path() / "capped" / "timeseries.csv"));
+}
+
+// A sweep's points side by side share the cores: jobs x solver threads above
+// the hardware threads is said in one line (sweep_command.cpp).
+TEST(ThreadCap, ASweepAskingForMoreThreadsThanCoresWarns) {
+  const int cores = hardware_threads();
+  EXPECT_TRUE(oversubscription_warning(1, cores).empty());
+  EXPECT_TRUE(oversubscription_warning(cores, 1).empty());
+  const std::string w = oversubscription_warning(cores + 1, 1);
+  EXPECT_NE(w.find(fmt::format("ask for {} threads on this machine's {}", cores + 1, cores)),
+            std::string::npos)
+      << w;
+  EXPECT_FALSE(oversubscription_warning(2, cores).empty());
 }
 
 }  // namespace
