@@ -40,6 +40,24 @@ constexpr std::array kAliases = {
     Alias{"visc", Quantity::Viscosity},
     Alias{"eta", Quantity::Viscosity},
     Alias{"\xCE\xB7", Quantity::Viscosity},  // η
+    // German and French, as Anton Paar RheoCompass, Malvern rSpace and TA
+    // TRIOS write them in those languages (issue 32): "Schubspannung",
+    // "Scherrate", "Viskosität"; "Contrainte de Cisaillement", "Gradient de
+    // Cisaillement", "Viscosité". Accented letters in UTF-8, and without
+    // their accents as exports to ASCII write them.
+    Alias{"schubspannung", Quantity::ShearStress},
+    Alias{"scherspannung", Quantity::ShearStress},
+    Alias{"contrainte de cisaillement", Quantity::ShearStress},
+    Alias{"scherrate", Quantity::ShearRate},
+    Alias{"schergeschwindigkeit", Quantity::ShearRate},
+    Alias{"gradient de cisaillement", Quantity::ShearRate},
+    Alias{"taux de cisaillement", Quantity::ShearRate},
+    Alias{"vitesse de cisaillement", Quantity::ShearRate},
+    Alias{"viskosit\xC3\xA4t", Quantity::Viscosity},  // Viskosität
+    Alias{"viskositaet", Quantity::Viscosity},
+    Alias{"viskositat", Quantity::Viscosity},
+    Alias{"viscosit\xC3\xA9", Quantity::Viscosity},  // viscosité
+    Alias{"viscosite", Quantity::Viscosity},
 };
 
 struct Unit {
@@ -64,9 +82,15 @@ constexpr std::array kUnits = {
 
 std::string normalise_name(std::string_view name) {
   std::string out;
+  bool after_c3 = false;  // the lead byte of a Latin-1 letter in UTF-8
   for (const char c : name) {
     char d = c;
     if (d >= 'A' && d <= 'Z') d = static_cast<char>(d - 'A' + 'a');
+    // Upper-case Latin-1 letters (À..Þ but ×) to lower case: "VISCOSITÉ".
+    const auto byte = static_cast<unsigned char>(c);
+    if (after_c3 && byte >= 0x80 && byte <= 0x9E && byte != 0x97)
+      d = static_cast<char>(byte + 0x20);
+    after_c3 = byte == 0xC3;
     if (d == '_' || d == '-' || d == '.' || d == '\t') d = ' ';
     if (d == ' ' && (out.empty() || out.back() == ' ')) continue;
     out.push_back(d);
@@ -94,12 +118,18 @@ std::optional<Quantity> recognise(std::string_view name) {
   return std::nullopt;
 }
 
-// Keeps ASCII letters, digits, '/', '^' and '-': "mPa·s", "mPa.s", "mPa s" and
-// "mPa*s" all become "mPas".
+// Superscripts as ASCII ("s⁻¹" and Malvern's "s-¹" become "s-1", "cm²"
+// "cm2"), then keeps ASCII letters, digits, '/', '^' and '-': "mPa·s", "mPa.s",
+// "mPa s" and "mPa*s" all become "mPas".
 std::string normalise_unit(std::string_view unit) {
-  if (trim(unit) == "s\xE2\x81\xBB\xC2\xB9") return "s^-1";  // s⁻¹
+  std::string ascii(unit);
+  for (const auto& [superscript, plain] :
+       {std::pair{"\xE2\x81\xBB"sv, "-"sv}, std::pair{"\xC2\xB9"sv, "1"sv},
+        std::pair{"\xC2\xB2"sv, "2"sv}, std::pair{"\xC2\xB3"sv, "3"sv}})
+    for (auto at = ascii.find(superscript); at != std::string::npos; at = ascii.find(superscript))
+      ascii.replace(at, superscript.size(), plain);
   std::string out;
-  for (const char c : unit) {
+  for (const char c : ascii) {
     const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
                       c == '/' || c == '^' || c == '-';
     if (keep) out.push_back(c);
@@ -161,7 +191,7 @@ std::optional<double> si_factor(Quantity q, std::string_view unit) {
 std::string_view known_units(Quantity q) {
   switch (q) {
     case Quantity::ShearRate:
-      return "1/s, s^-1";
+      return "1/s, s^-1, s-1, s\xE2\x81\xBB\xC2\xB9";
     case Quantity::ShearStress:
       return "Pa, mPa, kPa, MPa, dyn/cm2";
     case Quantity::Viscosity:

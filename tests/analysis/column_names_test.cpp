@@ -35,6 +35,16 @@ TEST(ColumnNames, RecognisesCommonSpellingsAndSplitsOffTheUnit) {
       {"Time [s]", std::nullopt, "s"},
       {"Rate:", std::nullopt, ""},  // a metadata key, not a heading
       {"Point No.", std::nullopt, ""},
+      // German and French exports (Anton Paar, Malvern, TA in those languages).
+      {"Contrainte de Cisaillement", Quantity::ShearStress, ""},
+      {"Gradient de Cisaillement", Quantity::ShearRate, ""},
+      {"Viscosit\xC3\xA9", Quantity::Viscosity, ""},
+      {"VISCOSIT\xC3\x89 [Pa\xC2\xB7s]", Quantity::Viscosity, "Pa\xC2\xB7s"},
+      {"Schubspannung [Pa]", Quantity::ShearStress, "Pa"},
+      {"Scherrate [1/s]", Quantity::ShearRate, "1/s"},
+      {"Viskosit\xC3\xA4t [mPa\xC2\xB7s]", Quantity::Viscosity, "mPa\xC2\xB7s"},
+      {"Shear rate(s-\xC2\xB9)", Quantity::ShearRate, "s-\xC2\xB9"},  // Malvern rSpace
+      {"Contrainte normale", std::nullopt, ""},
   };
   for (const Case& c : cases) {
     const Heading h = parse_heading(c.heading);
@@ -48,7 +58,10 @@ TEST(ColumnNames, RecognisesCommonSpellingsAndSplitsOffTheUnit) {
 TEST(ColumnNames, ConvertsUnitsToSI) {
   EXPECT_EQ(si_factor(Quantity::ShearRate, "1/s"), 1.0);
   EXPECT_EQ(si_factor(Quantity::ShearRate, "s^-1"), 1.0);
-  EXPECT_EQ(si_factor(Quantity::ShearRate, "s\xE2\x81\xBB\xC2\xB9"), 1.0);
+  EXPECT_EQ(si_factor(Quantity::ShearRate, "s\xE2\x81\xBB\xC2\xB9"), 1.0);  // s⁻¹
+  EXPECT_EQ(si_factor(Quantity::ShearRate, "s-\xC2\xB9"), 1.0);             // Malvern's s-¹
+  EXPECT_EQ(si_factor(Quantity::ShearRate, "s-1"), 1.0);
+  EXPECT_FALSE(si_factor(Quantity::ShearRate, "s\xC2\xB2"));  // s² is no rate
   EXPECT_EQ(si_factor(Quantity::ShearStress, "Pa"), 1.0);
   EXPECT_EQ(si_factor(Quantity::ShearStress, "mPa"), 1e-3);
   EXPECT_EQ(si_factor(Quantity::ShearStress, "kPa"), 1e3);

@@ -52,6 +52,68 @@ TEST(FlowCurveCsv, ReadsTheShippedAntonPaarExport) {
     EXPECT_NEAR(p.viscosity * p.shear_rate / p.shear_stress, 1.0, 2e-4) << "line " << p.line;
 }
 
+// UTF-8 text (code points of the Basic Multilingual Plane) as UTF-16 LE with
+// its byte-order mark, as Anton Paar RheoCompass writes its exports.
+std::string utf16le(const std::string& utf8) {
+  std::string out = "\xFF\xFE";
+  for (std::size_t i = 0; i < utf8.size();) {
+    const auto b = static_cast<unsigned char>(utf8[i]);
+    const int n = b < 0x80 ? 1 : b < 0xE0 ? 2 : 3;
+    unsigned cp = n == 1 ? b : n == 2 ? (b & 0x1Fu) : (b & 0x0Fu);
+    for (int k = 1; k < n; ++k) cp = (cp << 6) | (static_cast<unsigned char>(utf8[i + k]) & 0x3Fu);
+    out.push_back(static_cast<char>(cp & 0xFFu));
+    out.push_back(static_cast<char>(cp >> 8));
+    i += static_cast<std::size_t>(n);
+  }
+  return out;
+}
+
+TEST(FlowCurveCsv, ReadsAFrenchRheoCompassExportInUtf16) {
+  // The layout of issue 32: metadata lines, the "Interval données:" header in
+  // French, a units row, tabs, decimal commas, viscosity in mPa·s, an empty
+  // frequency column.
+  test::TempDir dir;
+  const std::string text =
+      "Projet:\tsuspension\n"
+      "Test:\tcourbe\n"
+      "R\xC3\xA9sultat:\tFlow Curve 1\n"
+      "Intervalle et points de donn\xC3\xA9\x65s:\t1\t4\n"
+      "Interval donn\xC3\xA9\x65s:\tPoint No.\tTemps\tIntervalle Temps\tContrainte de "
+      "Cisaillement\tGradient de Cisaillement\tFr\xC3\xA9quence\tViscosit\xC3\xA9\n"
+      "\t\t[s]\t[s]\t[Pa]\t[1/s]\t[Hz]\t[mPa\xC2\xB7s]\n"
+      "\t1\t1\t1\t73,196\t300\t\t243,99\n"
+      "\t2\t2\t1\t20,5\t100\t\t205\n"
+      "\t3\t3\t1\t5,4\t30\t\t180\n"
+      "\t4\t4\t1\t1,6\t10\t\t160\n";
+  const auto points = read_flow_curve_file(dir.write("fr.csv", utf16le(text))).points;
+  ASSERT_EQ(points.size(), 4u);
+  EXPECT_DOUBLE_EQ(points.front().shear_stress, 1.6);
+  EXPECT_DOUBLE_EQ(points.front().shear_rate, 10.0);
+  EXPECT_DOUBLE_EQ(points.front().viscosity, 0.16);  // 160 mPa·s
+  EXPECT_EQ(points.front().line, 10u);
+  EXPECT_DOUBLE_EQ(points.back().shear_stress, 73.196);
+  EXPECT_DOUBLE_EQ(points.back().viscosity, 0.24399);
+}
+
+TEST(FlowCurveCsv, ReadsAOneStepMalvernExportWithSuperscriptUnits) {
+  // Malvern rSpace: ';', decimal commas, units in parentheses with a Unicode
+  // superscript ("s-¹"), a text column naming the step. (Files of several
+  // steps are issue 32's next item.)
+  test::TempDir dir;
+  const auto points =
+      read_flow_curve_file(
+          dir.write("m.csv",
+                    "Action Name;Time (sequence)(s);Shear stress(Pa);Shear rate(s-\xC2\xB9);"
+                    "Normal force(N)\n"
+                    "Flow Curve Up;112,3;1,5;3,0;0,2044\n"
+                    "Flow Curve Up;113,3;3,0;6,1;0,2044\n"
+                    "Flow Curve Up;114,3;6,0;12,5;0,2044\n"))
+          .points;
+  ASSERT_EQ(points.size(), 3u);
+  EXPECT_DOUBLE_EQ(points[1].shear_stress, 3.0);
+  EXPECT_DOUBLE_EQ(points[1].shear_rate, 6.1);
+}
+
 TEST(FlowCurveCsv, ReadsTabsUnitsRowsWindowsCodePageAndTwoColumns) {
   test::TempDir dir;
   // Tab-separated, units row with a Windows-1252 middle dot, decimal commas.
