@@ -22,14 +22,28 @@ from .configs import load_config
 from .tables import read_table
 
 
-class ShearCell:
+class _Stepped:
+    """An engine object wrapped for Python (ShearCell here, Scene and Sediment
+    in scene.py): everything the wrapper does not define (done, strain,
+    positions, write_results, ...) is the compiled object's `_object`."""
+
+    def __getattr__(self, name):
+        if name == "_object":
+            raise AttributeError(name)
+        return getattr(self._object, name)
+
+    def __dir__(self):
+        return sorted(set(super().__dir__()) | set(dir(self._object)))
+
+
+class ShearCell(_Stepped):
     def __init__(self, config=None, overrides=None):
-        self._cell = _core.ShearCell(load_config(config, overrides))
+        self._object = _core.ShearCell(load_config(config, overrides))
 
     @classmethod
     def _wrap(cls, core_cell):
         cell = cls.__new__(cls)
-        cell._cell = core_cell
+        cell._object = core_cell
         return cell
 
     @classmethod
@@ -45,47 +59,37 @@ class ShearCell:
     # Stepping
     def step(self):
         """One time step."""
-        self._cell.step()
+        self._object.step()
 
     def advance(self, strain=None, steps=None):
         """Steps on by `strain` or `steps` (whichever first), or until done;
         returns the steps taken."""
-        return self._cell.advance(strain=strain, steps=steps)
+        return self._object.advance(strain=strain, steps=steps)
 
     def finish(self):
         """Closes the time series' last row: call once at the end of a run."""
-        self._cell.finish()
+        self._object.finish()
 
     # Tables
     @property
     def contacts(self):
-        return read_table(self._cell.contacts_csv())
+        return read_table(self._object.contacts_csv())
 
     @property
     def timeseries(self):
-        return read_table(self._cell.timeseries_csv())
+        return read_table(self._object.timeseries_csv())
 
     @property
     def velocity_profile(self):
-        return read_table(self._cell.velocity_profile_csv())
+        return read_table(self._object.velocity_profile_csv())
 
     @property
     def sommerfeld_hist(self):
-        return read_table(self._cell.sommerfeld_hist_csv())
+        return read_table(self._object.sommerfeld_hist_csv())
 
     def summary(self):
         """summary.json's fields for the run so far."""
-        return self._cell.summary()
-
-    # Everything else (done, strain, positions, write_results, ...) is the
-    # compiled object's.
-    def __getattr__(self, name):
-        if name == "_cell":
-            raise AttributeError(name)
-        return getattr(self._cell, name)
-
-    def __dir__(self):
-        return sorted(set(super().__dir__()) | set(dir(self._cell)))
+        return self._object.summary()
 
     def __repr__(self):
         return (f"<dilatant.ShearCell {len(self.radii)} bodies, strain {self.strain:.4g}"

@@ -16,20 +16,9 @@ run.time (examples/pile/pile.toml of the source tree: `dilatant.Scene(path)`);
 its contacts are a numpy table. State in code units, as the CLI's files.
 """
 from . import _core
+from .cell import _Stepped
 from .configs import load_config
 from .tables import read_table
-
-
-class _Stepped:
-    """What both share: the compiled object's attributes, a repr."""
-
-    def __getattr__(self, name):
-        if name == "_object":
-            raise AttributeError(name)
-        return getattr(self._object, name)
-
-    def __dir__(self):
-        return sorted(set(super().__dir__()) | set(dir(self._object)))
 
 
 class Scene(_Stepped):
