@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "analysis/flow_curve_csv.hpp"
+#include "analysis/rheometer_file.hpp"
 #include "drivers/shear_cell_state.hpp"
 #include "io/config.hpp"
 #include "io/input_error.hpp"
@@ -76,7 +76,16 @@ void checkpoint(const std::uint8_t* data, std::size_t size) {
 void rheometer_file(const std::uint8_t* data, std::size_t size) {
   const InputFile file(data, size, "flow-curve.csv");
   try {
-    (void)analysis::read_flow_curve_file(file.path);
+    // Every step found (tables, TRIOS [step] sections, RheoCompass intervals,
+    // Malvern's Action Name column), listed as --list does, then the curves
+    // chosen without a choice and by the first step's number and name.
+    const analysis::RheometerFile read = analysis::read_rheometer_file(file.path);
+    (void)analysis::step_listing(read);
+    try {
+      (void)analysis::choose_flow_curves(read, {});
+    } catch (const InputError&) {
+    }
+    (void)analysis::choose_flow_curves(read, {1, read.steps.front().name, "fuzz"});
   } catch (const InputError&) {
   }
 }

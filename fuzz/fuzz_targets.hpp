@@ -24,7 +24,8 @@ void particles_csv(const std::uint8_t* data, std::size_t size);
 // A shear cell's checkpoint.bin (drivers/shear_cell_state.hpp). Refusal: a
 // std::runtime_error whose message names the file.
 void checkpoint(const std::uint8_t* data, std::size_t size);
-// A rheometer export or plain flow-curve table (analysis/flow_curve_csv.hpp).
+// A rheometer export of one or several steps, or a plain flow-curve table
+// (analysis/rheometer_file.hpp).
 // Refusal: InputError.
 void rheometer_file(const std::uint8_t* data, std::size_t size);
 

@@ -25,6 +25,10 @@ struct AnalysisInput {
   std::size_t dropped_rows = 0;
   std::vector<std::string> dropped;
 
+  // Steps of rheometer files that are not flow curves, per file that had any:
+  // "<file>: step 1 'Pre Shear Initial' (hold), ..." (rheometer_file.hpp).
+  std::vector<std::string> skipped_steps;
+
   void note_dropped(const std::string& file, std::size_t rows, const std::string& summary) {
     if (rows == 0) return;
     dropped_rows += rows;
@@ -39,6 +43,9 @@ AnalysisInput load_analysis_input(const std::filesystem::path& path);
 // Manifest:
 //   [[curve]]                 one per flow-curve file
 //   file = "A_0537.csv"       relative to the manifest
+//   step = "Flow Curve Up"    optional: the file's step, by name or number
+//                             (step = 2); without it every flow-curve step
+//                             of the file is a curve (rheometer_file.hpp)
 //   sample = "A"              the coating (any name without ',' or '"')
 //   phi = 0.537               volume fraction, in (0, 0.74)
 //   window_stress = [5.0, 300.0]   optional: fit window in Pa (replaces the automatic one)

@@ -4,6 +4,7 @@
 #include <array>
 #include <utility>
 
+#include "analysis/delimited_text.hpp"
 #include "io/text.hpp"
 
 namespace dilatant::analysis {
@@ -82,16 +83,8 @@ constexpr std::array kUnits = {
 
 std::string normalise_name(std::string_view name) {
   std::string out;
-  bool after_c3 = false;  // the lead byte of a Latin-1 letter in UTF-8
-  for (const char c : name) {
-    char d = c;
-    if (d >= 'A' && d <= 'Z') d = static_cast<char>(d - 'A' + 'a');
-    // Upper-case Latin-1 letters (À..Þ but ×) to lower case: "VISCOSITÉ".
-    const auto byte = static_cast<unsigned char>(c);
-    if (after_c3 && byte >= 0x80 && byte <= 0x9E && byte != 0x97)
-      d = static_cast<char>(byte + 0x20);
-    after_c3 = byte == 0xC3;
-    if (d == '_' || d == '-' || d == '.' || d == '\t') d = ' ';
+  for (const char c : lower_case(name)) {
+    const char d = c == '_' || c == '-' || c == '.' || c == '\t' ? ' ' : c;
     if (d == ' ' && (out.empty() || out.back() == ' ')) continue;
     out.push_back(d);
   }
@@ -172,6 +165,11 @@ std::string_view quantity_name(Quantity q) {
 Heading parse_heading(std::string_view heading) {
   const auto [name, unit] = split_heading(trim(heading));
   return Heading{recognise(name), std::string(unit)};
+}
+
+bool names_step_column(std::string_view heading) {
+  const std::string n = normalise_name(trim(heading));
+  return n == "action name" || n == "step name" || n == "step" || n == "action";
 }
 
 std::string unit_of_units_field(std::string_view field) {

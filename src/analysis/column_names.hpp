@@ -33,6 +33,10 @@ struct Heading {
 // Splits a heading into name and unit and recognises the name.
 Heading parse_heading(std::string_view heading);
 
+// A column whose text names each row's step: Malvern rSpace's "Action Name",
+// "Step name", "Step".
+bool names_step_column(std::string_view heading);
+
 // The unit of a units row's field: "[Pa·s]" -> "Pa·s".
 std::string unit_of_units_field(std::string_view field);
 

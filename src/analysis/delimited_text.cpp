@@ -121,6 +121,26 @@ std::optional<double> parse_number(std::string_view text) {
   return v;
 }
 
+std::optional<double> parse_number(std::string_view text, char decimal_mark) {
+  const char other = decimal_mark == ',' ? '.' : ',';
+  if (text.find(other) != std::string_view::npos) return std::nullopt;
+  return parse_number(text);
+}
+
 bool is_blank(std::string_view line) { return trim(line).empty(); }
+
+std::string lower_case(std::string_view text) {
+  std::string out(text);
+  bool after_c3 = false;  // the lead byte of a Latin-1 letter in UTF-8
+  for (char& c : out) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    // À..Þ but × (C3 97) to their lower-case letters, 0x20 above.
+    if (after_c3 && byte >= 0x80 && byte <= 0x9E && byte != 0x97)
+      c = static_cast<char>(byte + 0x20);
+    after_c3 = byte == 0xC3;
+  }
+  return out;
+}
 
 }  // namespace dilatant::analysis

@@ -32,6 +32,15 @@ std::vector<std::string> split_fields(std::string_view line, char separator);
 // decimal mark ("1,5e3"); nullopt if the text is not entirely a number.
 std::optional<double> parse_number(std::string_view text);
 
+// A number written with `decimal_mark` ('.' or ','), as a file that has
+// decided its mark writes it: "1,5" is no number when the mark is '.', and
+// "1.5" none when it is ','.
+std::optional<double> parse_number(std::string_view text, char decimal_mark);
+
 bool is_blank(std::string_view line);
+
+// Lower case for ASCII letters and for the accented capitals of Latin-1 in
+// UTF-8 ("É" is C3 89, "é" C3 A9): names compared in any case ("RÉSULTAT:").
+std::string lower_case(std::string_view text);
 
 }  // namespace dilatant::analysis

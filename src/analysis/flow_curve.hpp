@@ -36,10 +36,12 @@ struct StressWindow {
 
 struct FlowCurve {
   std::string source;  // the file the points come from
+  std::string step;    // the file's step ("2 'Flow Curve Up'"); "" for a file of one step
   std::string sample;  // coating (rheometer) or "mu0=<value>" (simulation)
   double phi = 0.0;
   std::optional<StressWindow> window;
   std::vector<FlowPoint> points;  // ascending shear stress
+  std::size_t dropped_rows = 0;   // rows left out (io/table_rows.hpp, rule 2)
 };
 
 }  // namespace dilatant::analysis

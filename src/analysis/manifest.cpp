@@ -4,9 +4,10 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <cstdint>
 
 #include "analysis/analysis_input.hpp"
-#include "analysis/flow_curve_csv.hpp"
+#include "analysis/rheometer_file.hpp"
 #include "io/input_error.hpp"
 #include "io/text.hpp"
 
@@ -41,8 +42,7 @@ class ManifestReader {
     if (array == nullptr || !array->is_array_of_tables())
       fail(curves, "curve: expected an array of tables ([[curve]])");
     for (std::size_t i = 0; i < array->size(); ++i)
-      input.curves.push_back(
-          read_curve(*array->get(i)->as_table(), fmt::format("curve[{}]", i), input));
+      read_curves(*array->get(i)->as_table(), fmt::format("curve[{}]", i), input);
     for (const auto& c : input.curves)
       if (std::find(input.samples.begin(), input.samples.end(), c.sample) == input.samples.end())
         input.samples.push_back(c.sample);
@@ -87,8 +87,9 @@ class ManifestReader {
     return phi;
   }
 
-  FlowCurve read_curve(const toml::table& t, const std::string& path, AnalysisInput& input) const {
-    reject_unknown(t, path, {"file", "sample", "phi", "window_stress"});
+  // The [[curve]] entry's curves: one, or one per flow-curve step of its file.
+  void read_curves(const toml::table& t, const std::string& path, AnalysisInput& input) const {
+    reject_unknown(t, path, {"file", "sample", "phi", "window_stress", "step"});
     FlowCurve c;
     const toml::node& file = require(t, path, "file");
     const std::filesystem::path data = (base_ / text(file, path + ".file")).lexically_normal();
@@ -103,10 +104,37 @@ class ManifestReader {
                                 path, c.sample));
     c.phi = volume_fraction(require(t, path, "phi"), path + ".phi");
     if (const toml::node* w = t.get("window_stress")) c.window = read_window(*w, path);
-    FlowCurveFile read = read_flow_curve_file(data);
-    c.points = std::move(read.points);
-    input.note_dropped(c.source, read.dropped_rows, read.dropped);
-    return c;
+    const StepChoice choice = read_step(t, path);
+    const ChosenCurves chosen = choose_flow_curves(read_rheometer_file(data), choice);
+    if (!chosen.skipped.empty()) input.skipped_steps.push_back(c.source + ": " + chosen.skipped);
+    for (const auto& step : chosen.curves) {
+      FlowCurve curve = c;
+      curve.step = step.step;
+      curve.points = step.curve.points;
+      curve.dropped_rows = step.curve.dropped_rows;
+      const std::string where = step.step.empty() ? c.source : c.source + " step " + step.step;
+      input.note_dropped(where, step.curve.dropped_rows, step.curve.dropped);
+      input.curves.push_back(std::move(curve));
+    }
+  }
+
+  // `step = 2` or `step = "Flow Curve Up"`; neither: every flow-curve step.
+  StepChoice read_step(const toml::table& t, const std::string& path) const {
+    StepChoice choice;
+    const toml::node* n = t.get("step");
+    if (n == nullptr) return choice;
+    const std::string name = path + ".step";
+    choice.origin = fmt::format("{}:{}: {}", source_, n->source().begin.line, name);
+    if (n->is_integer()) {
+      const auto v = *n->value<std::int64_t>();
+      if (v < 1) fail(n, fmt::format("{} = {}: steps are numbered from 1", name, v));
+      choice.number = static_cast<std::size_t>(v);
+    } else if (n->is_string()) {
+      choice.name = text(*n, name);
+    } else {
+      fail(n, fmt::format("{}: expected a step number (2) or name (\"Flow Curve Up\")", name));
+    }
+    return choice;
   }
 
   StressWindow read_window(const toml::node& n, const std::string& path) const {

@@ -20,6 +20,16 @@ std::string csv(double v) {
   return fmt::format("{:.6g}", v);
 }
 
+// Text for a quoted CSV field: '"' doubled (RFC 4180).
+std::string csv_text(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    out.push_back(c);
+    if (c == '"') out.push_back('"');
+  }
+  return out;
+}
+
 // null when not available (nlohmann writes NaN and inf as null too; explicit here).
 Json number(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
 
@@ -117,19 +127,20 @@ std::string curves_csv(const AnalysisReport& r) {
   std::string out =
       "sample,phi,eta_newtonian,onset_stress,onset_rate,n,n_low,n_high,regime,dst_evidence,"
       "bagnold,n_sigma,consistency,window_stress_low,window_stress_high,window_points,window,"
-      "noise,points,file\n";
+      "noise,points,file,step,dropped_rows\n";
   for (std::size_t i = 0; i < r.curves.size(); ++i) {
     const FlowCurve& c = r.input.curves[i];
     const CurveResult& k = r.curves[i];
     const bool fitted = k.window_points > 0;
     const char* bagnold = !k.bagnold ? "" : *k.bagnold ? "true" : "false";
-    out += fmt::format(
-        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\"\n", c.sample, csv(c.phi),
-        csv(k.eta_newtonian), csv(k.onset_stress), csv(k.onset_rate), csv(k.n), csv(k.n_low),
-        csv(k.n_high), regime_name(k.regime), dst_evidence_name(k.dst_evidence), bagnold,
-        csv(k.n_sigma), csv(k.consistency), csv(k.window_stress_low), csv(k.window_stress_high),
-        k.window_points, fitted ? (k.window_from_user ? "user" : "auto") : "", csv(k.noise),
-        c.points.size(), c.source);
+    out +=
+        fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\",\"{}\",{}\n",
+                    c.sample, csv(c.phi), csv(k.eta_newtonian), csv(k.onset_stress),
+                    csv(k.onset_rate), csv(k.n), csv(k.n_low), csv(k.n_high), regime_name(k.regime),
+                    dst_evidence_name(k.dst_evidence), bagnold, csv(k.n_sigma), csv(k.consistency),
+                    csv(k.window_stress_low), csv(k.window_stress_high), k.window_points,
+                    fitted ? (k.window_from_user ? "user" : "auto") : "", csv(k.noise),
+                    c.points.size(), csv_text(c.source), csv_text(c.step), c.dropped_rows);
   }
   return out;
 }
@@ -161,6 +172,8 @@ std::string fits_json(const AnalysisReport& r) {
   // Rows left out under the table policy (io/table_rows.hpp), per file.
   j["dropped_rows"] = r.input.dropped_rows;
   j["dropped"] = r.input.dropped;
+  // Steps of the rheometer files that are not flow curves (rheometer_file.hpp).
+  j["skipped_steps"] = r.input.skipped_steps;
   Json samples = Json::object();
   for (const auto& s : r.samples) samples[s.sample] = sample_json(s);
   j["samples"] = samples;

@@ -9,6 +9,7 @@
 #include "analysis/analysis.hpp"
 #include "analysis/analysis_input.hpp"
 #include "analysis/report_files.hpp"
+#include "analysis/rheometer_file.hpp"
 #include "app/python_script.hpp"
 #include "io/input_error.hpp"
 
@@ -26,7 +27,10 @@ CLI::App* add_analyze_command(CLI::App& app, AnalyzeCommandArgs& args) {
       "mu0, or by phi and its sample column). Writes curves.csv, points.csv, fits.json and "
       "plots (PNG, SVG) to --out. See docs/analysis.md.");
   cmd->add_option("input", args.input, "Manifest (.toml) or flowcurves.csv")
-      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--list", args.list,
+                  "Show the steps of a rheometer export (number, kind, rows, points, lines, "
+                  "name) and exit; a manifest's step = N or \"name\" chooses among them")
       ->check(CLI::ExistingFile);
   cmd->add_option("-o,--out", args.out, "Output folder (default: out/analysis/<input name>)");
   cmd->add_flag("--no-plots", args.no_plots, "Write the tables only, no plots");
@@ -74,6 +78,7 @@ void print_summary(const analysis::AnalysisReport& r, const std::filesystem::pat
                            r.curves.size(), r.samples.size(), out.string());
   // Dropped rows are said where the user looks, not only in fits.json.
   for (const auto& d : r.input.dropped) std::cout << "  " << d << "\n";
+  for (const auto& d : r.input.skipped_steps) std::cout << "  skipped: " << d << "\n";
   std::cout << fmt::format("  {:<12} {:>6} {:>4} {:>4}  {:<22} {:<18} {:<16}\n", "sample", "curves",
                            "cst", "dst", "phi_max", "A", "alpha");
   for (const auto& s : r.samples) {
@@ -103,6 +108,14 @@ void print_summary(const analysis::AnalysisReport& r, const std::filesystem::pat
 }  // namespace
 
 int execute_analyze_command(const AnalyzeCommandArgs& args) {
+  if (!args.list.empty()) {
+    if (!args.input.empty())
+      throw InputError("dilatant analyze: give either INPUT or --list FILE, not both");
+    std::cout << analysis::step_listing(analysis::read_rheometer_file(args.list));
+    return 0;
+  }
+  if (args.input.empty())
+    throw InputError("dilatant analyze: INPUT is required (a manifest or a flowcurves.csv)");
   check_settings(args.settings);
   const std::filesystem::path input(args.input);
   const std::filesystem::path out = args.out.empty()

@@ -1,5 +1,6 @@
 #pragma once
-// `dilatant analyze INPUT [--out DIR] [--no-plots] [options]`: the rheometer
+// `dilatant analyze INPUT [--out DIR] [--no-plots] [options]`, or
+// `dilatant analyze --list FILE` (the steps of a rheometer export): the rheometer
 // analysis (docs/analysis.md) of a manifest of rheometer files or of a sweep's
 // flowcurves.csv. The numbers come from the library (src/analysis); the plots
 // are drawn from the written files by python/dilatant/plots/analysis.py.
@@ -13,7 +14,8 @@ namespace dilatant {
 
 struct AnalyzeCommandArgs {
   std::string input;
-  std::string out;  // empty: out/analysis/<input stem>
+  std::string list;  // --list FILE: show the file's steps and exit
+  std::string out;   // empty: out/analysis/<input stem>
   bool no_plots = false;
   bool quiet = false;
   std::string python = default_python();

@@ -1,14 +1,13 @@
 // Reading one flow curve: plain tables, rheometer exports (metadata, ';' or tab,
 // decimal commas, mPa·s, a units row, UTF-16 or Windows-1252 text), and every
 // malformed file refused with "file:line: problem".
-#include "analysis/flow_curve_csv.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 #include <vector>
 
+#include "analysis/rheometer_file.hpp"
 #include "io/io_test_files.hpp"
 
 namespace dilatant::analysis::flow_curve_csv_test {
@@ -52,22 +51,6 @@ TEST(FlowCurveCsv, ReadsTheShippedAntonPaarExport) {
     EXPECT_NEAR(p.viscosity * p.shear_rate / p.shear_stress, 1.0, 2e-4) << "line " << p.line;
 }
 
-// UTF-8 text (code points of the Basic Multilingual Plane) as UTF-16 LE with
-// its byte-order mark, as Anton Paar RheoCompass writes its exports.
-std::string utf16le(const std::string& utf8) {
-  std::string out = "\xFF\xFE";
-  for (std::size_t i = 0; i < utf8.size();) {
-    const auto b = static_cast<unsigned char>(utf8[i]);
-    const int n = b < 0x80 ? 1 : b < 0xE0 ? 2 : 3;
-    unsigned cp = n == 1 ? b : n == 2 ? (b & 0x1Fu) : (b & 0x0Fu);
-    for (int k = 1; k < n; ++k) cp = (cp << 6) | (static_cast<unsigned char>(utf8[i + k]) & 0x3Fu);
-    out.push_back(static_cast<char>(cp & 0xFFu));
-    out.push_back(static_cast<char>(cp >> 8));
-    i += static_cast<std::size_t>(n);
-  }
-  return out;
-}
-
 TEST(FlowCurveCsv, ReadsAFrenchRheoCompassExportInUtf16) {
   // The layout of issue 32: metadata lines, the "Interval données:" header in
   // French, a units row, tabs, decimal commas, viscosity in mPa·s, an empty
@@ -85,7 +68,7 @@ TEST(FlowCurveCsv, ReadsAFrenchRheoCompassExportInUtf16) {
       "\t2\t2\t1\t20,5\t100\t\t205\n"
       "\t3\t3\t1\t5,4\t30\t\t180\n"
       "\t4\t4\t1\t1,6\t10\t\t160\n";
-  const auto points = read_flow_curve_file(dir.write("fr.csv", utf16le(text))).points;
+  const auto points = read_flow_curve_file(dir.write("fr.csv", test::utf16le(text))).points;
   ASSERT_EQ(points.size(), 4u);
   EXPECT_DOUBLE_EQ(points.front().shear_stress, 1.6);
   EXPECT_DOUBLE_EQ(points.front().shear_rate, 10.0);
@@ -211,8 +194,6 @@ std::vector<BadFile> bad_files() {
       {"InconsistentUnits",
        "Shear Rate [1/s],Shear Stress [Pa],Viscosity [Pa s]\n1,1,1000\n2,2,1000\n4,4,1000\n", 1,
        "unit"},
-      {"SecondTable", "shear_rate,shear_stress\n1,1\n2,2\n3,3\n\nshear_rate,shear_stress\n1,1\n", 6,
-       "second flow-curve table"},
       {"NoHeader", "1,2\n3,4\n", 1, "data before any header"},
       {"TwoStressColumns", "shear_rate,stress,tau\n1,1,1\n2,2,2\n3,3,3\n", 1,
        "two shear stress columns"},

@@ -98,6 +98,14 @@ std::vector<BadManifest> bad_manifests() {
       {"NoCurves", "[samples.A]\nphi_max = 0.5\n", ": ", "no [[curve]] entries"},
       {"InvalidToml", replaced(m, "[[curve]]\nfile = \"data/b1.csv\"", "[[curve]\nfile = 1"),
        ":13:", "invalid TOML"},
+      {"StepZero", replaced(m, "phi = 0.50\n", "phi = 0.50\nstep = 0\n"),
+       ":17: ", "curve[2].step = 0: steps are numbered from 1"},
+      {"StepNotANumberOrName", replaced(m, "phi = 0.50\n", "phi = 0.50\nstep = 1.5\n"),
+       ":17: ", "curve[2].step: expected a step number (2) or name"},
+      {"StepNotInTheFile", replaced(m, "phi = 0.50\n", "phi = 0.50\nstep = \"Up\"\n"),
+       ":17: ", "curve[2].step: step \"Up\": no step of"},
+      {"StepBeyondTheFile", replaced(m, "phi = 0.50\n", "phi = 0.50\nstep = 2\n"),
+       ":17: ", "curve[2].step: step 2: "},
   };
 }
 
@@ -117,6 +125,26 @@ TEST_P(ManifestBad, IsRefusedWithTheManifestLineAndTheProblem) {
 
 INSTANTIATE_TEST_SUITE_P(Manifest, ManifestBad, ::testing::ValuesIn(bad_manifests()),
                          [](const auto& p) { return p.param.name; });
+
+// A file of two steps (Malvern's layout): each flow step is a curve of its
+// own, or the manifest chooses one by name or number.
+TEST(Manifest, AFileOfSeveralStepsGivesACurvePerStepOrTheChosenOne) {
+  test::TempDir dir;
+  dir.write("ramps.csv",
+            "Action Name;Shear rate(1/s);Shear stress(Pa)\nUp;1;1\nUp;2;2\nUp;3;3,5\n"
+            "Down;3;3,4\nDown;2;2\nDown;1;1\n");
+  const std::string entry = "[[curve]]\nfile = \"ramps.csv\"\nsample = \"A\"\nphi = 0.5\n";
+  const AnalysisInput all = load_analysis_input(dir.write("all.toml", entry));
+  ASSERT_EQ(all.curves.size(), 2u);
+  EXPECT_EQ(all.curves[0].step, "1 'Up'");
+  EXPECT_EQ(all.curves[1].step, "2 'Down'");
+  EXPECT_DOUBLE_EQ(all.curves[1].points.back().shear_stress, 3.4);
+  for (const auto& step : {std::string("step = \"down\"\n"), std::string("step = 2\n")}) {
+    const AnalysisInput one = load_analysis_input(dir.write("one.toml", entry + step));
+    ASSERT_EQ(one.curves.size(), 1u) << step;
+    EXPECT_EQ(one.curves[0].step, "2 'Down'") << step;
+  }
+}
 
 TEST(Manifest, AMalformedDataFileIsNamedWithItsOwnLine) {
   test::TempDir dir;

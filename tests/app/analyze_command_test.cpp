@@ -1,6 +1,7 @@
 // End-to-end tests of `dilatant analyze` (docs/analysis.md): the real executable
 // on the shipped example, on a sweep's flowcurves.csv, without a usable Python,
 // and on malformed input (exit 2, one line naming file and line, no results).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -173,6 +174,37 @@ TEST(AnalyzeCommand, RowsWithZeroOrMissingValuesAreDroppedAndCounted) {
   const auto fits = nlohmann::json::parse(read_text(out / "fits.json"));
   EXPECT_EQ(fits["dropped_rows"], 2);
   ASSERT_EQ(fits["dropped"].size(), 1u);
+}
+
+// --list shows a rheometer export's steps; the analysis of its manifest says
+// which steps it skipped and labels each curve with its step.
+TEST(AnalyzeCommand, ListShowsTheStepsAndTheAnalysisNamesThem) {
+  test::CliDir dir;
+  std::string rows = "Action Name;Shear rate(1/s);Shear stress(Pa)\n";
+  for (int k = 0; k < 3; ++k) rows += fmt::format("Pre-shear;50;{}\n", 30 + k);
+  for (int k = 1; k <= 6; ++k) rows += fmt::format("Flow Curve Up;{};{}\n", k * k, k * k * 0.5);
+  const fs::path data = dir.write("steps.csv", rows);
+  auto r = dir.run({"analyze", "--list", data.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find(data.string() + ": 2 steps"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("hold"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Flow Curve Up"), std::string::npos) << r.out;
+  const fs::path manifest =
+      dir.write("m.toml", "[[curve]]\nfile = \"steps.csv\"\nsample = \"A\"\nphi = 0.5\n");
+  const fs::path out = dir.path() / "out";
+  r = dir.run({"analyze", manifest.string(), "--out", out.string(), "--no-plots"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("skipped: " + data.string() + ": step 1 'Pre-shear' (hold)"),
+            std::string::npos)
+      << r.out;
+  const std::string curves = read_text(out / "curves.csv");
+  EXPECT_NE(curves.find(",step,dropped_rows\n"), std::string::npos) << curves;
+  EXPECT_NE(curves.find(",\"2 'Flow Curve Up'\",0\n"), std::string::npos) << curves;
+  r = dir.run({"analyze", "--list", data.string(), manifest.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  r = dir.run({"analyze"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("INPUT is required"), std::string::npos) << r.err;
 }
 
 TEST(AnalyzeCommand, RefusesAnInputThatIsNeitherAManifestNorASweepAndBadOptions) {

@@ -43,6 +43,22 @@ class TempDir {
   std::filesystem::path path_;
 };
 
+// UTF-8 text (code points of the Basic Multilingual Plane) as UTF-16 LE with
+// its byte-order mark, as Anton Paar RheoCompass writes its exports.
+inline std::string utf16le(const std::string& utf8) {
+  std::string out = "\xFF\xFE";
+  for (std::size_t i = 0; i < utf8.size();) {
+    const auto b = static_cast<unsigned char>(utf8[i]);
+    const int n = b < 0x80 ? 1 : b < 0xE0 ? 2 : 3;
+    unsigned cp = n == 1 ? b : n == 2 ? (b & 0x1Fu) : (b & 0x0Fu);
+    for (int k = 1; k < n; ++k) cp = (cp << 6) | (static_cast<unsigned char>(utf8[i + k]) & 0x3Fu);
+    out.push_back(static_cast<char>(cp & 0xFFu));
+    out.push_back(static_cast<char>(cp >> 8));
+    i += static_cast<std::size_t>(n);
+  }
+  return out;
+}
+
 // The message of the InputError that `f` throws; a test failure if it throws none.
 template <class F>
 std::string input_error_message(F&& f) {
