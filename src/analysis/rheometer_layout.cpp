@@ -66,6 +66,7 @@ class LayoutFinder {
       }
       if (is_section(t)) {
         const bool step = lower_case(t) == "[step]";
+        interval_ = false;
         expect = step ? Expect::Title : Expect::Nothing;
         marker_ = step ? i + 1 : 0;
         name_.clear();
@@ -84,15 +85,22 @@ class LayoutFinder {
       if (const auto n = interval_marker(fields)) {
         marker_ = i + 1;
         name_ = (result_.empty() ? "" : result_ + ", ") + "interval " + *n;
+        interval_ = true;
         expect = Expect::Header;
         ++i;
         continue;
       }
       if (const auto r = result_name(fields)) result_ = *r;
       const std::size_t recognised = flow_headings(fields);
-      if (expect == Expect::Header || recognised >= 2) {
+      // After "[step]" and its title the header follows; after an interval
+      // marker, metadata ("Profile:") may come first, then "Interval data:".
+      const bool header =
+          recognised >= 2 || (expect == Expect::Header &&
+                              (!interval_ || lower_case(fields[0]).starts_with("interval")));
+      if (header) {
         i = read_table(i);
         expect = Expect::Nothing;
+        interval_ = false;
         marker_ = 0;
         name_.clear();
         continue;
@@ -179,6 +187,7 @@ class LayoutFinder {
   std::size_t marker_ = 0;  // the line of the pending step's marker
   std::string name_;        // the pending step's name
   std::string result_;      // RheoCompass's current result
+  bool interval_ = false;   // the pending step's marker is an interval line
 };
 
 }  // namespace

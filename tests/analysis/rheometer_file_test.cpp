@@ -232,6 +232,15 @@ TEST(RheometerFile, SplitsARheoCompassResultIntoItsIntervalsInUtf16) {
   EXPECT_DOUBLE_EQ(f.steps[1].curve.points[1].viscosity, 0.7);
 }
 
+// The shipped RheoCompass export has metadata ("Profile:", a blank line)
+// between its interval marker and the interval's header: one step.
+TEST(RheometerFile, MetadataBetweenAnIntervalMarkerAndItsHeaderIsSkipped) {
+  const auto f = read_rheometer_file(std::filesystem::path(DILATANT_SOURCE_DIR) /
+                                     "tests/analysis/data/anton_paar_export.csv");
+  expect_steps(f, {{StepKind::FlowCurve, 49, 49, "interval 1"}});
+  EXPECT_EQ(f.steps[0].first_line, 4u);
+}
+
 TEST(RheometerFile, AChosenStepMustExistAndBeAFlowCurve) {
   test::TempDir dir;
   const auto f = read_rheometer_file(dir.write("malvern.csv", kMalvern));
