@@ -44,6 +44,7 @@ __all__ = [
     "AnalysisResult", "Config", "ConfigError", "Result", "Scene", "Sediment", "ShearCell",
     "SweepResult",
     "__version__", "analyze", "load_config", "phase_diagram", "predict", "read_table",
+    "rheometer_steps",
     "run", "sweep",
 ]
 
@@ -77,5 +78,5 @@ else:
     from .scene import Scene, Sediment
     from .runs import Result, run
     from .sweeps import SweepResult, sweep
-    from .rheology import AnalysisResult, analyze, phase_diagram, predict
+    from .rheology import AnalysisResult, analyze, phase_diagram, predict, rheometer_steps
     from .tables import read_table

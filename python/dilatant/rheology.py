@@ -51,6 +51,16 @@ def analyze(input, out=None, *, plots=True, onset_factor=None, dst_n_cap=None,
     return AnalysisResult(out, keep=True)
 
 
+def rheometer_steps(file):
+    """The steps of a rheometer export, as `dilatant analyze --list FILE` shows
+    them: one dict per step with number, name, kind ('flow curve',
+    'oscillation', 'hold', 'other'), rows, points (None unless a usable flow
+    curve), dropped_rows, first_line, last_line and problem (None, or why a
+    flow step gives no curve). A manifest's `step = N` or `step = "name"`
+    chooses among them (docs/analysis.md, "Rheometer exports")."""
+    return _core.rheometer_steps(Path(file))
+
+
 def predict(mu0, phi, s_c=None, table=None):
     """The flow regime ('cst', 'dst', 'no_flow') of spheres with friction mu0
     at volume fraction phi, with the margins and the onset scale: the dict of

@@ -10,6 +10,7 @@
 
 #include "analysis/analysis.hpp"
 #include "analysis/report_files.hpp"
+#include "analysis/rheometer_file.hpp"
 #include "bindings.hpp"
 #include "io/input_error.hpp"
 
@@ -53,11 +54,34 @@ py::dict analyse(const std::filesystem::path& input, const std::filesystem::path
   return d;
 }
 
+// The steps of a rheometer export (`dilatant analyze --list`), one dict each.
+py::list rheometer_steps(const std::filesystem::path& file) {
+  const analysis::RheometerFile read = analysis::read_rheometer_file(file);
+  py::list steps;
+  for (const auto& s : read.steps) {
+    const bool curve = s.kind == analysis::StepKind::FlowCurve &&
+                       s.problem == analysis::RheometerStep::Problem::None;
+    py::dict d;
+    d["number"] = s.number;
+    d["name"] = s.name;
+    d["kind"] = std::string(analysis::step_kind_name(s.kind));
+    d["rows"] = s.rows;
+    d["points"] = curve ? py::object(py::int_(s.curve.points.size())) : py::object(py::none());
+    d["dropped_rows"] = s.curve.dropped_rows;
+    d["first_line"] = s.first_line;
+    d["last_line"] = s.last_line;
+    d["problem"] = s.why.empty() ? py::object(py::none()) : py::object(py::str(s.why));
+    steps.append(d);
+  }
+  return steps;
+}
+
 }  // namespace
 
 void bind_analysis(py::module_& m) {
   m.def("analyse", &analyse, py::arg("input"), py::arg("out"), py::arg("onset_factor"),
         py::arg("dst_n_cap"), py::arg("min_window_points"), py::arg("confidence"));
+  m.def("rheometer_steps", &rheometer_steps, py::arg("file"));
 }
 
 }  // namespace dilatant::python

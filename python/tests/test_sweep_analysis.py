@@ -77,3 +77,23 @@ def test_phase_diagram_table(cli, tmp_path):
     assert (tmp_path / "py" / "phase_diagram.csv").read_bytes() == \
         (tmp_path / "cli" / "phase_diagram.csv").read_bytes()
     assert set(np.unique(table["regime"])) <= {"cst", "dst", "no_flow"}
+
+
+def test_rheometer_steps_list_what_the_cli_lists(cli, tmp_path):
+    """dilatant.rheometer_steps gives the steps `dilatant analyze --list` shows:
+    a hold and a flow curve of a Malvern-style file."""
+    rows = ["Action Name;Shear rate(1/s);Shear stress(Pa)"]
+    rows += [f"Pre-shear;50;{30 + k}" for k in range(3)]
+    rows += [f"Flow Curve Up;{k * k};{k * k * 0.5}" for k in range(1, 7)]
+    data = tmp_path / "steps.csv"
+    data.write_text("\n".join(rows) + "\n")
+    steps = dilatant.rheometer_steps(data)
+    assert [s["kind"] for s in steps] == ["hold", "flow curve"]
+    assert [s["name"] for s in steps] == ["Pre-shear", "Flow Curve Up"]
+    assert steps[0]["points"] is None and steps[1]["points"] == 6
+    assert (steps[1]["first_line"], steps[1]["last_line"]) == (5, 10)
+    listing = run_cli(cli, "analyze", "--list", data).stdout
+    assert "Flow Curve Up" in listing and "hold" in listing
+    with pytest.raises(dilatant.ConfigError, match="steps.csv:3: 4 fields, the header has 3"):
+        data.write_text(rows[0] + "\n" + rows[1] + "\nPre-shear;50;31;9\n")
+        dilatant.rheometer_steps(data)
