@@ -148,6 +148,34 @@ std::pair<std::string_view, std::string_view> split_heading(std::string_view h) 
   return {h, ""};
 }
 
+// A parenthesised qualifier, not a unit: "Contrainte de Cisaillement (pour
+// déformation sinusoïdale)" is RheoCompass's oscillation amplitude, "Stress
+// (step)" TRIOS's stress of a step; either is another column than the
+// quantity named. Qualifiers are words (two or more, one of them of 4 letters
+// or more) or one of TRIOS's tags; a unit is one short token ("mPa·s", "Pa s",
+// "1/s"), and an unknown one ("Poise") stays an error.
+bool is_qualifier(std::string_view part) {
+  const std::string p = lower_case(trim(part));
+  for (const auto tag : {"step"sv, "cmd"sv, "raw"sv, "set"sv, "average"sv, "avg"sv, "mean"sv})
+    if (p == tag) return true;
+  std::size_t words = 0, longest = 0, run = 0;
+  bool in_word = false;
+  for (const char c : p + ' ') {
+    // Accented letters (UTF-8 bytes >= 0x80) continue a word but do not
+    // lengthen it: "cm²" is 2 letters, "déformation" 10.
+    const bool ascii = c >= 'a' && c <= 'z';
+    const bool letter = ascii || (static_cast<unsigned char>(c) & 0x80);
+    if (ascii) ++run;
+    if (letter && !in_word) ++words;
+    if (!letter) {
+      longest = std::max(longest, run);
+      run = 0;
+    }
+    in_word = letter;
+  }
+  return words >= 2 && longest >= 4;
+}
+
 }  // namespace
 
 std::string_view quantity_name(Quantity q) {
@@ -164,6 +192,7 @@ std::string_view quantity_name(Quantity q) {
 
 Heading parse_heading(std::string_view heading) {
   const auto [name, unit] = split_heading(trim(heading));
+  if (is_qualifier(unit)) return Heading{std::nullopt, std::string(unit)};
   return Heading{recognise(name), std::string(unit)};
 }
 

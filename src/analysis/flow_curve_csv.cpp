@@ -48,6 +48,7 @@ class TableReader {
                           v.implied, v.tolerance);
     out.dropped_rows = dropped_.count();
     out.dropped = dropped_.summary();
+    out.drops = dropped_;
     out.ramp_in_stress = has(Quantity::ShearStress);
     return out;
   }
@@ -187,6 +188,23 @@ char decimal_mark(const std::vector<std::string>& lines, const RheometerLayout& 
     }
   }
   return '.';
+}
+
+void drop_repeated_ramp_values(FlowCurveFile& curve) {
+  const auto ramp = [&](const FlowPoint& p) {
+    return curve.ramp_in_stress ? p.shear_stress : p.shear_rate;
+  };
+  std::vector<FlowPoint> kept;
+  for (const FlowPoint& p : curve.points) {
+    if (!kept.empty() && ramp(p) == ramp(kept.back())) {
+      curve.drops.repeated(p.line);
+      continue;
+    }
+    kept.push_back(p);
+  }
+  curve.points = std::move(kept);
+  curve.dropped_rows = curve.drops.count();
+  curve.dropped = curve.drops.summary();
 }
 
 void order_flow_curve(std::string_view source, FlowCurveFile& curve) {

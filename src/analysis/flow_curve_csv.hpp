@@ -23,6 +23,7 @@
 
 #include "analysis/flow_curve.hpp"
 #include "analysis/rheometer_layout.hpp"
+#include "io/table_rows.hpp"
 
 namespace dilatant::analysis {
 
@@ -33,12 +34,19 @@ struct FlowCurveFile {
   std::size_t dropped_rows = 0;   // rows with a missing, zero or negative value
   std::string dropped;            // DroppedRows::summary(): which lines and why; "" if none
   bool ramp_in_stress = true;     // the ramp variable: stress, or rate when no stress column
+  DroppedRows drops;              // what dropped_rows and dropped summarise
 };
 
 // The points of `rows` (1-based lines of `lines`) of `table`, in file order.
 FlowCurveFile read_flow_table(std::string_view source, const std::vector<std::string>& lines,
                               const RheometerTable& table, const std::vector<std::size_t>& rows,
                               char decimal_mark);
+
+// Drops (and counts, in `drops`) a point whose ramp value repeats the previous
+// point's exactly, as read: an export that writes set points with too few
+// digits ("0.18" twice, TA TRIOS at low stress) gives two points no abscissa
+// can separate; a value that goes back is still the ramp's error below.
+void drop_repeated_ramp_values(FlowCurveFile& curve);
 
 // Checks that the ramp variable is strictly monotonic, ascending or
 // descending (a point that breaks it is named), and orders the points by

@@ -88,6 +88,7 @@ class FileReader {
         r.kind = StepKind::Hold;
         return r;
       }
+      drop_repeated_ramp_values(r.curve);
       const auto n = r.curve.points.size();
       if (n < kMinCurvePoints) {
         // Oscillation rows of a table that has every column (Malvern's)

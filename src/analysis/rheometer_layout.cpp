@@ -42,6 +42,19 @@ std::optional<std::string> result_name(const std::vector<std::string>& f) {
   return std::nullopt;
 }
 
+bool has_number(const std::vector<std::string>& f) {
+  return std::any_of(f.begin(), f.end(), [](const auto& x) { return parse_number(x).has_value(); });
+}
+
+// The header of a TRIOS step's table, which may name no flow-curve column (an
+// amplitude sweep's): flow-curve headings, the LIMS export's "Variables" line,
+// or three or more names and no number (not "Number of points  17").
+bool is_step_header(const std::vector<std::string>& f) {
+  if (flow_headings(f) >= 2 || (!f.empty() && lower_case(f[0]) == "variables")) return true;
+  const auto named = std::count_if(f.begin(), f.end(), [](const auto& x) { return !x.empty(); });
+  return named >= 3 && !has_number(f);
+}
+
 // A metadata line ("Test:  B", "Projet:  x"): its first field is a label.
 bool is_label_line(const std::vector<std::string>& f) {
   return !f.empty() && f[0].size() > 1 && f[0].back() == ':';
@@ -74,7 +87,15 @@ class LayoutFinder {
         continue;
       }
       const auto fields = fields_of(lines_[i]);
-      if (expect == Expect::Title) {  // TRIOS: the line after "[step]" names it
+      // TRIOS's LIMS export names the step on a "Step name" line.
+      if (expect != Expect::Nothing && fields.size() >= 2 && lower_case(fields[0]) == "step name") {
+        name_ = fields[1];
+        expect = Expect::Header;
+        ++i;
+        continue;
+      }
+      if (expect == Expect::Title && !is_step_header(fields)) {
+        // TRIOS's text export: the line after "[step]" names it ("Flow sweep - 3").
         const auto named =
             std::find_if(fields.begin(), fields.end(), [](const auto& f) { return !f.empty(); });
         name_ = named == fields.end() ? "" : *named;
@@ -95,8 +116,9 @@ class LayoutFinder {
       // After "[step]" and its title the header follows; after an interval
       // marker, metadata ("Profile:") may come first, then "Interval data:".
       const bool header =
-          recognised >= 2 || (expect == Expect::Header &&
-                              (!interval_ || lower_case(fields[0]).starts_with("interval")));
+          recognised >= 2 ||
+          (expect != Expect::Nothing &&
+           (interval_ ? lower_case(fields[0]).starts_with("interval") : is_step_header(fields)));
       if (header) {
         i = read_table(i);
         expect = Expect::Nothing;
@@ -153,9 +175,15 @@ class LayoutFinder {
       if (trimmed.empty() || (rows.empty() && all_empty(f))) continue;
       if (ends_table(trimmed, fields_of(lines_[j]))) break;
       check_field_count(source_, j + 1, f.size(), t.headings.size());
-      if (rows.empty() && !t.units_line && is_units_row(t, f)) {
-        t.units_line = j + 1;
-        t.units = f;
+      // Before the data and the units row, a row without numbers is the units
+      // row, or a second header line (RheoCompass's "Sinusoïdes" over its
+      // oscillation columns). After the units row it is a row (RheoCompass's
+      // "1 (invalid)" points: dropped as missing values, and counted).
+      if (rows.empty() && !t.units_line && !has_number(f)) {
+        if (!t.units_line && is_units_row(t, f)) {
+          t.units_line = j + 1;
+          t.units = f;
+        }
         continue;
       }
       rows.push_back(j + 1);

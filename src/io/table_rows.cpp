@@ -52,11 +52,16 @@ std::optional<double> DroppedRows::positive(std::string_view source, std::size_t
   return std::nullopt;
 }
 
+void DroppedRows::repeated(std::size_t line) {
+  if (lines_.empty() || lines_.back().first != line) lines_.emplace_back(line, Why::Repeated);
+}
+
 std::string DroppedRows::summary() const {
   if (lines_.empty()) return "";
   std::string kinds;
   for (const auto& [why, what] : {std::pair{Why::Missing, "missing value"},
-                                  std::pair{Why::NotPositive, "zero or negative value"}}) {
+                                  std::pair{Why::NotPositive, "zero or negative value"},
+                                  std::pair{Why::Repeated, "repeated ramp value"}}) {
     std::vector<std::size_t> lines;
     for (const auto& [line, w] : lines_)
       if (w == why) lines.push_back(line);

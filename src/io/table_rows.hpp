@@ -41,13 +41,18 @@ class DroppedRows {
   // number, or an infinite one, is an InputError (rule 3).
   std::optional<double> positive(std::string_view source, std::size_t line, std::string_view column,
                                  std::string_view text, std::optional<double> number);
+  // A row of a flow curve whose ramp value (stress, or rate) repeats the
+  // previous row's as written: an abscissa cannot separate them (an export
+  // writing set points with too few digits, "0.18, 0.18"). Rule 2 as well.
+  void repeated(std::size_t line);
   std::size_t count() const { return lines_.size(); }
-  // "2 rows dropped (missing value: line 7; zero or negative value: line 9)",
+  // "2 rows dropped (missing value: line 7; zero or negative value: line 9;
+  // repeated ramp value: line 12)",
   // naming at most a few lines of each kind; "" when none.
   std::string summary() const;
 
  private:
-  enum class Why { Missing, NotPositive };
+  enum class Why { Missing, NotPositive, Repeated };
   std::vector<std::pair<std::size_t, Why>> lines_;
 };
 

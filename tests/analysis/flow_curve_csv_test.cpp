@@ -163,7 +163,11 @@ std::vector<BadFile> bad_files() {
       {"SinglePoint", "shear_rate,shear_stress\n1,1\n", 2, "only 1 data point"},
       {"HeaderOnly", "shear_rate,shear_stress\n", 1, "only 0 data points"},
       {"UnsortedData", "shear_rate,shear_stress\n1,1\n3,3\n2,2\n", 4, "breaks the ascending"},
-      {"RepeatedStress", "shear_rate,shear_stress\n1,1\n2,2\n2.1,2\n", 4, "breaks the ascending"},
+      // A repeated ramp value is dropped and counted (TRIOS writes set points
+      // with too few digits); what is left must still be a curve.
+      {"RepeatedStress", "shear_rate,shear_stress\n1,1\n2,2\n2.1,2\n", 3,
+       "only 2 data points after the header; a flow curve needs at least 3 (1 row dropped "
+       "(repeated ramp value: line 4))"},
       // A spike is named on its own line, not on the next one (issue 31).
       {"Spike", "shear_rate,shear_stress\n1,1\n2,2\n9,9\n4,4\n5,5\n", 4,
        "shear stress 9 breaks the ascending ramp (after 2 on line 3, before 4 on line 5)"},

@@ -149,6 +149,54 @@ const std::string kRheoCompass =
     "\t3\t11\t10\t6\t0.6\tDy_auto\n"
     "\t4\t12\t1\t0.8\t0.8\tDy_auto\n";
 
+// RheoCompass in French as a real export writes it: a second header line
+// ("Sinusoïdes") over the oscillation columns, columns qualified "(pour
+// déformation sinusoïdale)" beside the flow curve's own, an interval of
+// invalid points ("1  (invalide)"), decimal commas.
+const std::string kRheoCompassHeader =
+    "Interval donn\xC3\xA9\x65s:\tPoint No.\tTemps\tContrainte de Cisaillement\tGradient de "
+    "Cisaillement\tContrainte de Cisaillement (pour d\xC3\xA9\x66ormation "
+    "sinuso\xC3\xAF\x64\x61le)\n"
+    "\t\t\t\t\tSinuso\xC3\xAF\x64\x65s\n"
+    "\t\t[s]\t[Pa]\t[1/s]\t[Pa]\n";
+const std::string kRheoCompassFrench =
+    "Projet:\tcarbopol\n"
+    "R\xC3\xA9sultat:\tFlow Curve 1\n"
+    "Intervalle et points de donn\xC3\xA9\x65s:\t1\t3\n" +
+    kRheoCompassHeader +
+    "\t1\t1\t73,196\t300\t\n"
+    "\t2\t2\t72,859\t300\t\n"
+    "\t3\t3\t72,901\t300\t\n"
+    "Intervalle et points de donn\xC3\xA9\x65s:\t2\t3\n" +
+    kRheoCompassHeader +
+    "\t1  (invalide)\t\t\t\t\n"
+    "\t2  (invalide)\t\t\t\t\n"
+    "\t3  (invalide)\t\t\t\t\n"
+    "Intervalle et points de donn\xC3\xA9\x65s:\t3\t4\n" +
+    kRheoCompassHeader +
+    "\t1\t4\t15,343\t0,00609\t\n"
+    "\t2\t8\t15,398\t0,00649\t\n"
+    "\t3\t12\t18,2\t1,21\t\n"
+    "\t4\t16\t25,973\t9,49\t\n";
+
+// TA TRIOS's "Export to LIMS" text: "[Step]", "Step name", "Number of
+// points", the "Variables" and "Units" lines, rows labelled "Data point";
+// "Stress (step)" is another column than the stress; set points written with
+// too few digits repeat ("0.18" twice).
+const std::string kTriosLims =
+    "[Header]\n"
+    "Instrument serial number\t5332-0120\n"
+    "[Step]\n"
+    "Step name\tFlow sweep (25.0 \xC2\xB0\x43)\n"
+    "Number of points\t5\n"
+    "Variables\tStress\tShear rate\tViscosity\tStress (step)\tStep time\n"
+    "Units\tPa\t1/s\tPa.s\tPa\ts\n"
+    "Data point\t0.22\t0.0251707\t8.740\t0.22\t10.0\n"
+    "Data point\t0.20\t0.0198663\t10.07\t0.20\t20.0\n"
+    "Data point\t0.18\t0.0126287\t14.25\t0.18\t30.0\n"
+    "Data point\t0.18\t0.0101777\t17.69\t0.18\t40.0\n"
+    "Data point\t0.16\t5.80024e-3\t27.59\t0.16\t50.0\n";
+
 struct Expected {
   StepKind kind;
   std::size_t rows;
@@ -239,6 +287,41 @@ TEST(RheometerFile, MetadataBetweenAnIntervalMarkerAndItsHeaderIsSkipped) {
                                      "tests/analysis/data/anton_paar_export.csv");
   expect_steps(f, {{StepKind::FlowCurve, 49, 49, "interval 1"}});
   EXPECT_EQ(f.steps[0].first_line, 4u);
+}
+
+TEST(RheometerFile, ReadsARealRheoCompassLayoutWithSubHeadersAndInvalidPoints) {
+  test::TempDir dir;
+  const auto f = read_rheometer_file(dir.write("fr.csv", test::utf16le(kRheoCompassFrench)));
+  ASSERT_EQ(f.steps.size(), 3u) << step_listing(f);
+  EXPECT_EQ(step_kind_name(f.steps[0].kind), "hold");  // pre-shear at 300 1/s
+  // The invalid points are rows with no value: dropped, counted, too few left.
+  EXPECT_EQ(f.steps[1].rows, 3u);
+  EXPECT_EQ(f.steps[1].problem, RheometerStep::Problem::TooFewPoints);
+  EXPECT_NE(f.steps[1].why.find("3 rows dropped (missing value: lines 14, 15, 16)"),
+            std::string::npos)
+      << f.steps[1].why;
+  // The qualified column is not a second stress: the ramp is read.
+  EXPECT_EQ(f.steps[2].problem, RheometerStep::Problem::None) << f.steps[2].why;
+  ASSERT_EQ(f.steps[2].curve.points.size(), 4u);
+  EXPECT_DOUBLE_EQ(f.steps[2].curve.points[1].shear_rate, 0.00649);
+  const ChosenCurves chosen = choose_flow_curves(f, {});
+  ASSERT_EQ(chosen.curves.size(), 1u);
+  EXPECT_EQ(chosen.skipped,
+            "step 1 'Flow Curve 1, interval 1' (hold), step 2 'Flow Curve 1, interval 2' (too few "
+            "points)");
+}
+
+TEST(RheometerFile, ReadsATriosLimsExportAndDropsRepeatedSetPoints) {
+  test::TempDir dir;
+  const auto f = read_rheometer_file(dir.write("lims.txt", kTriosLims));
+  ASSERT_EQ(f.steps.size(), 1u) << step_listing(f);
+  const auto& s = f.steps[0];
+  EXPECT_EQ(s.name, "Flow sweep (25.0 \xC2\xB0\x43)");
+  EXPECT_EQ(s.first_line, 3u);
+  EXPECT_EQ(s.problem, RheometerStep::Problem::None) << s.why;
+  ASSERT_EQ(s.curve.points.size(), 4u);  // the second 0.18 Pa dropped
+  EXPECT_EQ(s.curve.dropped, "1 row dropped (repeated ramp value: line 11)");
+  EXPECT_DOUBLE_EQ(s.curve.points.front().shear_stress, 0.16);
 }
 
 TEST(RheometerFile, AChosenStepMustExistAndBeAFlowCurve) {
