@@ -3,7 +3,8 @@
 committed files they were copied from.
 
 A docs table copied from a CSV (or JSON) file carries a marker, an HTML comment
-on the lines just above it (blank lines between are allowed). Its arguments are
+that starts a line just above it (blank lines between are allowed; an indented
+marker is an example in a code block and is not read). Its arguments are
 read like a shell command line (quote an argument that holds spaces):
 
     <!-- table-source: docs/jamming/phi_max_bl.csv key=mu0
@@ -73,7 +74,8 @@ import tempfile
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 
-MARKER = re.compile(r"<!--\s*(table-source|value-source):(.*?)-->", re.S)
+# A marker starts a line: an indented one is an example inside a code block.
+MARKER = re.compile(r"^<!--\s*(table-source|value-source):(.*?)-->", re.S | re.M)
 TABLE_ROW = re.compile(r"^\s*\|.*\|\s*$")
 SEPARATOR = re.compile(r"^\s*\|[\s:|-]+\|\s*$")
 # A number as docs write it: 1,215 / -0.11 / +0.12 / 2.3e-4 / 4 x 10^4 / 10^4.
@@ -514,6 +516,10 @@ AGREE = """# made up
 | a.b | c |
 |---|---|
 | 2.5 | — (none) |
+
+An example in a code block is not read:
+
+    <!-- table-source: d/none.csv columns="x" -->
 
 <!-- value-source: d/t.csv where=mu0=0.4 column=note says="step 143039" -->
 It blew up at step 143039, says the file.
