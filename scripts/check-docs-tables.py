@@ -30,7 +30,8 @@ read like a shell command line (quote an argument that holds spaces):
       values (two curves of one file side by side in one table).
 * `key=COL[,COL...]`: the columns that identify a row. Each must be a
   one-column SPEC of `columns`; a table row's key cells select the file's row
-  whose values agree with them. Without `key`, the table's rows are the
+  whose values equal them (or, if none is equal, agree with them as numbers
+  rounded, below). Without `key`, the table's rows are the
   file's rows (after `where`) in order, and their numbers must be equal.
 * `where=COL=VALUE` (may be repeated): only the file's rows with that value
   are considered.
@@ -362,9 +363,11 @@ def check_table(md, marker_line, marker, table_lines, root, cache, problems):
                 nums = parse_numbers(plain(cells[i]))
                 name = marker["key"][j]
                 if len(nums) == 1:
+                    # A key is equal to the file's value; if none is, rounded to it.
                     v, h = nums[0]
-                    cand = [r for r in cand if to_float(r.get(name)) is not None
-                            and agrees(v, h, to_float(r.get(name)))]
+                    exact = [r for r in cand if to_float(r.get(name)) == v]
+                    cand = exact or [r for r in cand if to_float(r.get(name)) is not None
+                                     and agrees(v, h, to_float(r.get(name)))]
                 else:
                     cand = [r for r in cand if plain(cells[i]) == (r.get(name) or "").strip()]
             return cand
