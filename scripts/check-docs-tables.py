@@ -16,6 +16,8 @@ read like a shell command line (quote an argument that holds spaces):
 * FILE (first argument): a path from the repository's root. A .csv file's rows
   are its rows; a .json file holding a list of objects gives one row each, a
   single object one row (nested keys joined with dots: `stress.mu_eff`).
+  Several files joined by commas give their rows in that order (one
+  `summary.json` per table row).
 * `columns="SPEC | SPEC | ..."`: one SPEC per column of the table, in order.
   A SPEC is `-` (the column is not from this file: not checked) or the file's
   columns whose values the cell shows, in the order the cell shows them,
@@ -153,6 +155,9 @@ def flatten(obj, prefix=""):
 
 
 def read_rows(root, name, cache):
+    if "," in name:  # several files: their rows in the order named
+        parts = [read_rows(root, n, cache) for n in name.split(",")]
+        return ([r for rows, _ in parts for r in rows], set().union(*(c for _, c in parts)))
     if name in cache:
         return cache[name]
     path = root / name
