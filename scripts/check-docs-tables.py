@@ -24,14 +24,16 @@ read like a shell command line (quote an argument that holds spaces):
   separated by spaces. The numbers of the cell (`0.5781 ± 0.0006` holds two)
   are compared one by one with them, and the cell must hold exactly as many
   numbers as the SPEC names columns. In a SPEC:
-    - `_` stands for a number of the cell that is not from the file;
+    - `_` stands for a number of the cell that is not from the file (`_?`:
+      one that may be missing);
     - `NAME?` may be missing from the cell (`eta eta_err?` reads `112` and
-      `112 ± 8`);
+      `112 ± 8`; an empty cell of only `?` names says nothing against the file);
     - `NAME*100` compares the file's value times 100 (a fraction shown in %);
     - `NAME[COL=VALUE,...]` takes NAME from the row that also has those
       values (two curves of one file side by side in one table).
-* `key=COL[,COL...]`: the columns that identify a row. Each must be a
-  one-column SPEC of `columns`; a table row's key cells select the file's row
+* `key=COL[,COL...]`: the columns that identify a row. Each must begin a
+  SPEC of `columns` (`phi phi_bulk` keys on phi, the cell's first number, and
+  checks phi_bulk); a table row's key cells select the file's row
   whose values equal them (or, if none is equal, agree with them as numbers
   rounded, below). Without `key`, the table's rows are the
   file's rows (after `where`) in order, and their numbers must be equal.
@@ -205,8 +207,8 @@ def parse_spec(spec):
         return None
     refs = []
     for token in spec.split():
-        if token == "_":
-            refs.append({"skip": True, "optional": False})
+        if token in ("_", "_?"):
+            refs.append({"skip": True, "optional": token == "_?"})
             continue
         m = REF.match(token)
         if not m:
@@ -292,8 +294,8 @@ def check_cell(cell, refs, row_for, report, column_name):
         row = row_for(ref)
         values.append(row.get(ref["name"], ""))
     checked = [(r, v) for r, v in zip(refs, values) if not r["skip"]]
-    if says_no_value(cell):
-        present = [v for _, v in checked if (v or "").strip() != ""]
+    if says_no_value(cell):  # an optional value may be left out of the cell
+        present = [v for r, v in checked if (v or "").strip() != "" and not r["optional"]]
         if present:
             report(column_name, cell, " ".join(present))
         return
@@ -347,9 +349,9 @@ def check_table(md, marker_line, marker, table_lines, root, cache, problems):
     key_index = []
     for k in marker["key"]:
         idx = [i for i, s in enumerate(specs)
-               if s and len(s) == 1 and not s[0]["skip"] and s[0]["name"] == k and not s[0]["cond"]]
+               if s and not s[0]["skip"] and s[0]["name"] == k and not s[0]["cond"]]
         if not idx:
-            raise Problem(f"key column '{k}' is not a one-column entry of columns=")
+            raise Problem(f"key column '{k}' does not begin an entry of columns=")
         key_index.append(idx[0])
     if not marker["key"] and len(body) != len(pool):
         problems.append(f"{md}:{marker_line}: the table has {len(body)} rows, "
@@ -365,7 +367,7 @@ def check_table(md, marker_line, marker, table_lines, root, cache, problems):
         def candidates(extra):
             cand = select(pool, extra)
             for j, i in enumerate(key_index):
-                nums = parse_numbers(plain(cells[i]))
+                nums = parse_numbers(plain(cells[i]))[:1]  # a key is the cell's first value
                 name = marker["key"][j]
                 if len(nums) == 1:
                     # A key is equal to the file's value; if none is, rounded to it.
@@ -399,8 +401,12 @@ def check_table(md, marker_line, marker, table_lines, root, cache, problems):
                             f"docs say {docs}, CSV says {file_value}")
 
         for i, (cell, spec) in enumerate(zip(cells, specs)):
-            if spec is None or i in key_index:
-                continue  # a key cell selected the row: it agrees by construction
+            if spec is None:
+                continue
+            if i in key_index:  # its first value selected the row; check the rest
+                if len(spec) == 1:
+                    continue
+                spec = [{"skip": True, "optional": False}] + spec[1:]
             try:
                 check_cell(cell, spec, row_for, report, names[i])
             except Problem as e:
