@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Everything CI checks, in order: packages, release build + tests, sanitizer
 # build (ASan + UBSan, which also holds the fuzz targets) + tests,
-# ThreadSanitizer, fuzzing (30 s a reader), formatting, layers. Later stages
-# still run after a failure so one run shows every problem; the exit status is
+# ThreadSanitizer, fuzzing (30 s a reader), formatting, layers, docs tables.
+# Later stages still run after a failure so one run shows every problem; the exit status is
 # non-zero if any stage failed. At the end: each stage's wall time and the
 # slowest tests (build/test-report.md). docs/testing.md says what each stage
 # checks and why.
@@ -112,6 +112,11 @@ stage "layers" layers_check || true
 # Each test file's code in a namespace of its own: the tests build in unity
 # batches whose make-up changes as files are added (scripts/build.sh).
 stage "test namespaces" python3 scripts/check-test-namespaces.py || true
+# Every docs table and prose number with a source marker agrees with the
+# committed CSV/JSON it names (docs/testing.md "Docs against their data"); the
+# checker first shows on made-up pages that it reports a disagreement.
+docs_check() { python3 scripts/check-docs-tables.py --self-test && python3 scripts/check-docs-tables.py; }
+stage "docs tables" docs_check || true
 
 python3 scripts/test_report.py "$times" release=build/ctest.log sanitize=build-sanitize/ctest.log \
   tsan=build-tsan/tsan.log >build/test-report.md || true
