@@ -46,7 +46,7 @@ struct Packing {
 const Packing& packing();
 
 struct RegimeMix {
-  double open = 0, stick = 0, bl = 0, hd = 0;  // fractions of all contacts
+  double open = 0, stick = 0, bl = 0, hd = 0, frictionless = 0;  // fractions of all contacts
 };
 
 RegimeMix regime_mix(const std::vector<Contact>& contacts);

@@ -1,6 +1,7 @@
 """Configurations: a dict, TOML text and a file give the same Config, and the
 resolved config goes round trip (dict -> Config -> dict -> Config)."""
 import copy
+import warnings
 
 import pytest
 
@@ -47,3 +48,21 @@ def test_numpy_values_are_accepted():
     resolved = dilatant.load_config(config).to_dict()
     assert resolved["cell"]["size"] == [6.0, 5.0, 7.0]
     assert resolved["cell"]["seed"] == 3
+
+
+def test_the_critical_load_law_from_python():
+    """friction.critical_load is a force in eta_f^2/rho_p (docs/model.md "Friction"):
+    the run reports it, in code units (F* / lambda^2 here) and as the onset stress."""
+    config = dilatant.load_config(TINY, {"friction.law": "critical_load",
+                                         "friction.critical_load": 50.0, "fluid.lambda": 5.0})
+    friction = config.to_dict()["friction"]
+    assert friction["law"] == "critical_load" and friction["critical_load"] == 50.0
+    with warnings.catch_warnings():  # a tiny cell's 0.05 strain: its validity is not the point
+        warnings.simplefilter("ignore", RuntimeWarning)
+        summary = dilatant.run(config).summary
+    assert summary["friction_law"] == "critical_load"
+    assert summary["critical_load_code"] == pytest.approx(50.0 / 25.0, rel=1e-15)
+    assert summary["onset_stress"] == pytest.approx(50.0, rel=1e-15)
+    assert summary["lambda_at_onset_stress"] == pytest.approx(50.0 ** 0.5, rel=1e-15)
+    with pytest.raises(dilatant.ConfigError, match="needs friction.critical_load > 0"):
+        dilatant.load_config(TINY, {"friction.law": "critical_load"})

@@ -21,6 +21,7 @@ def cli_message(cli, *args):
     TINY_TOML.replace("size =", "sizes ="),
     TINY_TOML + "[fluid]\neta_f = 1.0\n",
     TINY_TOML + "[solver]\nmax_iterations = \"many\"\n",
+    TINY_TOML + "[friction]\nlaw = \"critical_load\"\n",
 ])
 def test_file_errors_match_the_cli(cli, tmp_path, text):
     path = tmp_path / "bad.toml"

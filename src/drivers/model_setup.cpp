@@ -7,7 +7,7 @@
 
 namespace dilatant {
 
-FrictionLaw make_friction_law(const FrictionConfig& f, double eta_f) {
+FrictionLaw make_friction_law(const FrictionConfig& f, double eta_f, double critical_load) {
   switch (f.law) {
     case FrictionLawKind::Coulomb:
       return CoulombLaw{.mu0 = f.mu0, .eta_f = eta_f};
@@ -17,6 +17,8 @@ FrictionLaw make_friction_law(const FrictionConfig& f, double eta_f) {
                          .s_lim = f.s_lim,
                          .eta_f = eta_f,
                          .viscous_beyond_s_lim = f.viscous_beyond_s_lim};
+    case FrictionLawKind::CriticalLoad:
+      return CriticalLoadLaw{.mu0 = f.mu0, .critical_load = critical_load, .eta_f = eta_f};
   }
   return CoulombLaw{.mu0 = f.mu0, .eta_f = eta_f};
 }

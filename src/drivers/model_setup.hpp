@@ -11,9 +11,10 @@
 
 namespace dilatant {
 
-// eta_f in the simulation's units: the scene gives it directly, the shear cell
-// derives it from lambda.
-FrictionLaw make_friction_law(const FrictionConfig& friction, double eta_f);
+// eta_f and the critical load in the simulation's units (Config::fluid_viscosity(),
+// Config::critical_load()): the scene gives them directly, the shear cell
+// derives them from lambda.
+FrictionLaw make_friction_law(const FrictionConfig& friction, double eta_f, double critical_load);
 // solver.threads, 0 (all) and beyond the machine's hardware threads alike,
 // becomes at most hardware_threads(): more threads than cores make every
 // sweep's barrier wait for a thread that is not running (on 2 cores, 4 / 16 /

@@ -45,7 +45,7 @@ double scene_dt(const Config& config, const World& world) {
 Scene::Scene(Config config)
     : config_(std::move(config)),
       world_(scene_world(config_)),
-      stepper_(make_friction_law(config_.friction, config_.fluid.eta_f),
+      stepper_(make_friction_law(config_.friction, config_.fluid.eta_f, config_.critical_load()),
                make_solver_settings(config_.solver), scene_dt(config_, world_)),
       fluid_(make_fluid(config_.fluid, config_.fluid.eta_f)) {
   stepper_.set_fluid_forces(fluid_.get());  // a fluid at rest (ShearFlow's default)
@@ -93,7 +93,8 @@ nlohmann::json Scene::summary(double wall_time) const {
   for (const Contact& c : stepper_.contacts()) closed += c.p_n > 0.0 ? 1 : 0;
   j["contacts"] = closed;
   j["mu0"] = config_.friction.mu0;
-  j["friction_law"] = config_.friction.law == FrictionLawKind::Coulomb ? "coulomb" : "stribeck";
+  j["friction_law"] = friction_law_name(config_.friction.law);
+  j["critical_load"] = config_.friction.critical_load;
   j["wall_time_s"] = wall_time;
   return j;
 }

@@ -50,7 +50,7 @@ ShearCell::ShearCell(Config config, ShearCellState state)
       units_(units_of(config_)),
       state_(std::move(state)),
       fluid_(make_fluid(config_.fluid, units_.eta_f)),
-      stepper_(make_friction_law(config_.friction, units_.eta_f),
+      stepper_(make_friction_law(config_.friction, units_.eta_f, config_.critical_load()),
                make_solver_settings(config_.solver), state_.dt > 0.0 ? state_.dt : 1.0) {
   // The walls are rough glued grains: Coulomb friction (docs/shear-cell.md).
   state_.drive->set_contact_law(CoulombLaw{config_.cell()->wall_friction, units_.eta_f});

@@ -205,7 +205,7 @@ ShearCellState read_checkpoint(std::string bytes, const std::filesystem::path& f
     r.value(key);
     r.value(m.impulse);
     r.value(regime);
-    if (regime > static_cast<std::uint8_t>(Regime::Hydrodynamic)) {
+    if (regime > static_cast<std::uint8_t>(kLastRegime)) {
       throw std::runtime_error(file.string() + ": corrupt checkpoint (contact regime)");
     }
     m.regime = static_cast<Regime>(regime);

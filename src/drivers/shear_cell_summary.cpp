@@ -22,6 +22,28 @@ double bulk_fraction(const ShearCellState& s) {
                           : slab_volume_fraction(s.world, region.z_lo, region.z_hi);
 }
 
+namespace {
+
+// The critical-load law's scales (docs/model.md "Friction"): F* as given (the
+// paper's force unit eta_f^2/rho_p) and in code units; the onset stress
+// sigma* = F*/R^2 in the paper's units and over the applied stress; and the
+// lambda at which the applied stress, lambda^2 in the paper's units, meets it.
+// Null under the other laws.
+void write_critical_load(nlohmann::json& j, const Config& config, const CellUnits& u) {
+  const bool law = config.friction.law == FrictionLawKind::CriticalLoad;
+  const double radius = config.cell()->radius_max;
+  const double sigma_star = config.critical_load() / (radius * radius);
+  const double over_tau = sigma_star / config.cell()->shear_stress;
+  const auto value = [law](double v) { return law ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  j["critical_load"] = value(config.friction.critical_load);
+  j["critical_load_code"] = value(config.critical_load());
+  j["onset_stress"] = value(sigma_star / u.stress_unit);
+  j["onset_stress_over_tau"] = value(over_tau);
+  j["lambda_at_onset_stress"] = value(u.lambda * std::sqrt(over_tau));
+}
+
+}  // namespace
+
 nlohmann::json cell_summary(const Config& config, const CellUnits& u, const ShearCellState& s,
                             const RunCost& cost) {
   const CellConfig& cell = *config.cell();
@@ -65,7 +87,8 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   j["mu0"] = config.friction.mu0;
   j["s_c"] = config.friction.s_c;
   j["s_lim"] = config.friction.s_lim;
-  j["friction_law"] = config.friction.law == FrictionLawKind::Coulomb ? "coulomb" : "stribeck";
+  j["friction_law"] = friction_law_name(config.friction.law);
+  write_critical_load(j, config, u);
   j["beyond_s_lim"] = config.friction.viscous_beyond_s_lim ? "viscous" : "cap";
   j["lubrication"] = config.fluid.lubrication == LubricationKind::Normal ? "normal" : "none";
   j["drag"] = config.fluid.drag == DragKind::Stokes ? "stokes" : "none";

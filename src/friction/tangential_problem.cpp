@@ -12,6 +12,8 @@ const char* regime_name(Regime r) {
       return "bl";
     case Regime::Hydrodynamic:
       return "hd";
+    case Regime::Frictionless:
+      return "frictionless";
   }
   return "unknown";
 }

@@ -13,11 +13,20 @@
 
 namespace dilatant {
 
-// Which branch of a velocity-dependent law the solver imposes (Any: the law's
-// own deterministic rule). KeepHydrodynamic: the contact slid on the HD branch
-// in the previous step; it stays there while an HD answer with s >= s_c exists
-// (see friction/stribeck_law.hpp for why), else the law's own rule applies.
-enum class FrictionBranch : std::uint8_t { Any, Boundary, Hydrodynamic, KeepHydrodynamic };
+// Which branch of a law the solver imposes (Any: the law's own deterministic
+// rule). KeepHydrodynamic: the contact slid on the HD branch in the previous
+// step; it stays there while an HD answer with s >= s_c exists (see
+// friction/stribeck_law.hpp for why), else the law's own rule applies.
+// Boundary: the mu0 cone whatever s or the load; Frictionless: no friction
+// whatever the load (the critical-load law's two statuses frozen,
+// friction/critical_load_law.hpp).
+enum class FrictionBranch : std::uint8_t {
+  Any,
+  Boundary,
+  Hydrodynamic,
+  KeepHydrodynamic,
+  Frictionless
+};
 
 struct TangentialProblem {
   double free_slip = 0.0;       // |u_t_free|, sliding speed without friction impulse
@@ -34,9 +43,12 @@ enum class Regime : std::uint8_t {
   Stick,               // sliding speed 0, impulse inside the mu0 cone
   BoundaryLubricated,  // sliding with mu0 (s < s_c)
   Hydrodynamic,        // sliding with mu(s), s >= s_c
+  Frictionless,        // loaded below the critical load: sliding without friction
 };
+// The last Regime, for readers of stored regimes (checkpoints).
+inline constexpr Regime kLastRegime = Regime::Frictionless;
 
-const char* regime_name(Regime r);  // "open", "stick", "bl", "hd"
+const char* regime_name(Regime r);  // "open", "stick", "bl", "hd", "frictionless"
 
 struct TangentialSolution {
   double impulse = 0.0;        // |P_t|

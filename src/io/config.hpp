@@ -31,7 +31,9 @@
 
 namespace dilatant {
 
-enum class FrictionLawKind { Stribeck, Coulomb };
+enum class FrictionLawKind { Stribeck, Coulomb, CriticalLoad };
+// The word friction.law takes for it: "stribeck", "coulomb", "critical_load".
+std::string_view friction_law_name(FrictionLawKind law);
 // Fluid forces beyond the Stribeck friction (fluid/): none is the paper's literal model.
 enum class LubricationKind { None, Normal };
 enum class DragKind { None, Stokes };
@@ -99,6 +101,10 @@ struct FrictionConfig {
   double s_c = friction_defaults::kSc;
   double s_lim = friction_defaults::kSlim;
   bool viscous_beyond_s_lim = false;  // beyond_s_lim = "viscous" (friction/stribeck_law.hpp)
+  // F* of law = "critical_load" (friction/critical_load_law.hpp): in the shear
+  // cell in the paper's force unit eta_f^2/rho_p, in a scene in its own units;
+  // 0 (none) with every other law. Config::critical_load() converts it.
+  double critical_load = 0.0;
 };
 
 struct FluidConfig {
@@ -172,6 +178,11 @@ struct Config {
   // The fluid viscosity the friction law uses, in code units: fluid.eta_f in a
   // scene; sqrt(tau rho_p) R / lambda in the shear cell (measure/cell_units.hpp).
   double fluid_viscosity() const;
+  // The critical load the friction law uses, in code units: friction.critical_load
+  // in a scene; in the shear cell friction.critical_load x eta_f^2 / rho_p
+  // (= F*_paper tau R^2 / lambda^2), so that it stays one material force while
+  // fluid.lambda moves the applied stress (docs/model.md "Friction").
+  double critical_load() const;
 };
 
 // Reads `file`, applies `overrides`, validates. Throws InputError.

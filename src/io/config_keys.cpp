@@ -3,9 +3,11 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 #include "io/config_key_builders.hpp"
 #include "io/input_error.hpp"
@@ -17,6 +19,13 @@ void add_sediment_keys(std::vector<ConfigKey>& keys);  // io/config_keys_sedimen
 namespace {
 
 using namespace config_key_builders;
+
+// The words of friction.law (io/config.hpp).
+constexpr std::array<std::pair<std::string_view, FrictionLawKind>, 3> kFrictionLaws = {{
+    {"stribeck", FrictionLawKind::Stribeck},
+    {"coulomb", FrictionLawKind::Coulomb},
+    {"critical_load", FrictionLawKind::CriticalLoad},
+}};
 
 std::vector<ConfigKey> make_keys() {
   using enum RunMode;
@@ -141,13 +150,14 @@ std::vector<ConfigKey> make_keys() {
                         },
                         [](const Config& c, toml::table& t) { t.insert("density", c.density); }});
   // [friction] (docs/model.md "Friction"; paper Eq. 1)
-  k.push_back(
-      choice("friction", "law", Any, &friction, &FrictionConfig::law,
-             {{"stribeck", FrictionLawKind::Stribeck}, {"coulomb", FrictionLawKind::Coulomb}},
-             "stribeck: BL or HD by the Sommerfeld number; coulomb: always mu0 (the "
-             "control without hydrodynamics)"));
-  k.push_back(number("friction", "mu0", Any, &friction, &FrictionConfig::mu0, at_least(0.0), "",
-                     "boundary-lubricated friction coefficient"));
+  k.push_back(choice("friction", "law", Any, &friction, &FrictionConfig::law,
+                     {kFrictionLaws.begin(), kFrictionLaws.end()},
+                     "stribeck: BL or HD by the Sommerfeld number; coulomb: always mu0 (the "
+                     "control without hydrodynamics); critical_load: frictionless below "
+                     "friction.critical_load, mu0 from it on (Seto et al. 2013)"));
+  k.push_back(number(
+      "friction", "mu0", Any, &friction, &FrictionConfig::mu0, at_least(0.0), "",
+      "boundary-lubricated friction coefficient (critical_load: from the critical load on)"));
   k.push_back(number("friction", "s_c", Any, &friction, &FrictionConfig::s_c,
                      Range{0.0, kSommerfeldMax, false, false, "5/(6 pi) ~ 0.2653",
                            ": the HD friction is positive only there"},
@@ -160,6 +170,13 @@ std::vector<ConfigKey> make_keys() {
                      &FrictionConfig::viscous_beyond_s_lim, {{"cap", false}, {"viscous", true}},
                      "cap: mu held at mu(s_lim) (the paper); viscous: mu(s_lim) s / s_lim, a "
                      "friction force linear in the sliding speed (friction/stribeck_law.hpp)"));
+  k.push_back(number("friction", "critical_load", CellOrScene, &friction,
+                     &FrictionConfig::critical_load, at_least(0.0, " (0 = none)"),
+                     "eta_f^2/rho_p (cell), force (scene)",
+                     "F*, the normal force from which a contact is frictional under law = "
+                     "\"critical_load\" (> 0 there, 0 otherwise); a material constant: in a "
+                     "cell the applied stress, lambda^2 in the paper's units, meets the onset "
+                     "stress F*/R^2 at lambda = sqrt(F*/R^2) (docs/model.md \"Friction\")"));
   // [fluid]
   k.push_back(number("fluid", "lambda", Cell, &fluid, &FluidConfig::lambda, above(0.0), "",
                      "sqrt(tau rho_p) R / eta_f: the cell's eta_f = 1/lambda in code units"));
@@ -248,6 +265,12 @@ constexpr std::string_view kSections[] = {"cell",     "scene", "sediment", "part
                                           "friction", "fluid", "solver",   "run"};
 
 }  // namespace
+
+std::string_view friction_law_name(FrictionLawKind law) {
+  for (const auto& [word, value] : kFrictionLaws)
+    if (value == law) return word;
+  return "unknown";
+}
 
 std::span<const std::string_view> config_sections() { return kSections; }
 

@@ -204,8 +204,23 @@ void check_constraints(const std::function<Section(std::string_view)>& section, 
   const Section f = section("friction");
   const FrictionConfig& fr = c.friction;
   if (c.sediment() != nullptr)
-    check(f, "law", "stribeck", fr.law == FrictionLawKind::Coulomb,
+    check(f, "law", std::string(friction_law_name(fr.law)), fr.law == FrictionLawKind::Coulomb,
           "a sediment's contacts are boundary lubricated: use \"coulomb\" with friction.mu0");
+  // friction.critical_load belongs to law = "critical_load", which needs it.
+  if (fr.law == FrictionLawKind::CriticalLoad) {
+    if (f.find("critical_load"))
+      check(f, "critical_load", fr.critical_load, fr.critical_load > 0.0,
+            "must be > 0 with friction.law = \"critical_load\"");
+    else
+      check(f, "law", std::string(friction_law_name(fr.law)), fr.critical_load > 0.0,
+            "needs friction.critical_load > 0, the critical normal force (in eta_f^2/rho_p in "
+            "a cell)");
+  } else {
+    check(f, "critical_load", fr.critical_load, fr.critical_load == 0.0,
+          fmt::format("means nothing with friction.law = \"{}\" (it is the threshold of "
+                      "\"critical_load\")",
+                      friction_law_name(fr.law)));
+  }
   if (f.find("s_lim") || !f.find("s_c"))
     check(f, "s_lim", fr.s_lim, fr.s_lim > fr.s_c,
           fmt::format("must be > friction.s_c = {}", fr.s_c));

@@ -2,6 +2,7 @@
 // next to the results so that a run can be repeated exactly from its output.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <sstream>
 
 #include "io/config.hpp"
@@ -39,10 +40,40 @@ toml::table to_toml(const Config& c) {
   return t;
 }
 
+namespace {
+
+// Lines of comment after [friction] under law = "critical_load": F* in code
+// units, the onset stress sigma* = F*/R^2 in the paper's units and over the
+// applied stress, and the lambda at which the applied stress equals it
+// (tau_paper = lambda^2; measure/cell_units.hpp).
+std::string critical_load_comment(const Config& c) {
+  const CellConfig& cell = *c.cell();
+  const CellUnits u =
+      make_cell_units(cell.shear_stress, c.density, cell.radius_max, c.fluid.lambda);
+  const double sigma_star = c.critical_load() / (cell.radius_max * cell.radius_max);
+  const auto text = [](double v) { return toml_value_text(toml::value<double>(v)); };
+  return fmt::format(
+      "# critical_load in code units = {}  (derived: critical_load eta_f^2 / density)\n"
+      "# onset stress sigma* = critical_load / radius_max^2 = {} (paper's units) = {} x "
+      "shear_stress; the applied stress reaches it at lambda = {}\n",
+      text(c.critical_load()), text(sigma_star / u.stress_unit),
+      text(sigma_star / cell.shear_stress),
+      text(c.fluid.lambda * std::sqrt(sigma_star / cell.shear_stress)));
+}
+
+}  // namespace
+
 double Config::fluid_viscosity() const {
   if (const CellConfig* c = cell())
     return make_cell_units(c->shear_stress, density, c->radius_max, fluid.lambda).eta_f;
   return fluid.eta_f;
+}
+
+double Config::critical_load() const {
+  if (const CellConfig* c = cell())
+    return friction.critical_load *
+           make_cell_units(c->shear_stress, density, c->radius_max, fluid.lambda).force_unit;
+  return friction.critical_load;
 }
 
 std::string resolved_toml(const Config& c) {
@@ -74,6 +105,9 @@ std::string resolved_toml(const Config& c) {
       out +=
           fmt::format("# eta_f = {}  (derived: sqrt(shear_stress density) radius_max / lambda)\n",
                       toml_value_text(toml::value<double>(c.fluid_viscosity())));
+    // The critical load in code units, and the onset stress it sets.
+    if (section == "friction" && c.cell() && c.friction.law == FrictionLawKind::CriticalLoad)
+      out += critical_load_comment(c);
     for (std::size_t i = 0; planes && i < planes->size(); ++i) {
       out += "\n[[scene.planes]]\n";
       for (const auto key : {"point", "normal"})

@@ -135,6 +135,8 @@ std::int32_t vtk_regime_code(Regime r) {
       return 2;
     case Regime::Hydrodynamic:
       return 3;
+    case Regime::Frictionless:
+      return 4;
   }
   return -1;
 }
@@ -190,7 +192,8 @@ void write_contacts_vtp(const std::filesystem::path& file, const World& world,
 
   std::string out = polydata_header(2 * n, 0, n);
   out +=
-      "      <!-- regime: 0 open, 1 stick, 2 bl, 3 hd; boundary_lubricated: 1 if stick or bl "
+      "      <!-- regime: 0 open, 1 stick, 2 bl, 3 hd, 4 frictionless; boundary_lubricated: 1 if "
+      "stick or bl "
       "-->\n";
   out += "      <CellData Scalars=\"normal_force\">\n";
   scalar_array(out, "Float64", "normal_force", n,

@@ -20,8 +20,8 @@
 //              tangential_force     Float64  |p_t| / dt
 //              sliding_speed        Float64
 //              sommerfeld           Float64
-//              regime               Int32    0 open, 1 stick, 2 bl, 3 hd (vtk_regime_code)
-//              boundary_lubricated  UInt8    1 if stick or bl (s < s_c)
+//              regime               Int32    0 open, 1 stick, 2 bl, 3 hd, 4 frictionless
+//              (vtk_regime_code) boundary_lubricated  UInt8    1 if stick or bl (s < s_c)
 //
 // ASCII VTK cannot carry inf or NaN (the reader then rejects the whole array), so
 // +inf and NaN are written as the largest double and -inf as its negative.
@@ -35,7 +35,8 @@
 
 namespace dilatant {
 
-// The `regime` cell value: 0 open, 1 stick, 2 bl (boundary lubricated), 3 hd (hydrodynamic).
+// The `regime` cell value: 0 open, 1 stick, 2 bl (boundary lubricated), 3 hd (hydrodynamic),
+// 4 frictionless (below the critical load, friction/critical_load_law.hpp).
 std::int32_t vtk_regime_code(Regime r);
 
 // body_group[i] is sphere i's group (0 mobile, 1 bottom wall, 2 top wall); when empty,

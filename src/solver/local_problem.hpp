@@ -35,7 +35,9 @@ inline void apply_impulse(const Contact& c, const Vec3& dp, Bodies& b) {
 }
 
 // The branch imposed on a contact: once branches are frozen, the one it took in
-// the last pass; before, the HD branch if it slid on it in the previous step.
+// the last pass (the critical-load law's status too: frictional is the mu0
+// cone, Boundary; below the threshold, Frictionless); before, the HD branch if
+// it slid on it in the previous step.
 inline FrictionBranch imposed_branch(const Contact& c, bool frozen) {
   if (!frozen) {
     return c.previous_regime == Regime::Hydrodynamic ? FrictionBranch::KeepHydrodynamic
@@ -47,6 +49,8 @@ inline FrictionBranch imposed_branch(const Contact& c, bool frozen) {
       return FrictionBranch::Boundary;
     case Regime::Hydrodynamic:
       return FrictionBranch::Hydrodynamic;
+    case Regime::Frictionless:
+      return FrictionBranch::Frictionless;
     case Regime::Open:
       break;
   }

@@ -208,7 +208,7 @@ TEST(LeesEdwardsCell, AStribeckContactThroughTheBoundaryActsAsInsideTheBox) {
   const Vec3 x0(4.0, 3.0, 4.0);
   PairAcross p =
       pair_across(x0, Vec3(0.3, 0.0, 0.9), x0 + Vec3(0.3, 0.2, 1.95), Vec3(-0.2, 0.1, -0.8));
-  const FrictionLaw law = make_friction_law(FrictionConfig{}, 0.1);
+  const FrictionLaw law = make_friction_law(FrictionConfig{}, 0.1, 0.0);
   const Contact c = expect_same_step(p, law, nullptr);
   EXPECT_GT(c.p_n, 0.0);
   EXPECT_GT(c.p_t.norm(), 0.0);  // friction acts

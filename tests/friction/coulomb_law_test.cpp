@@ -19,7 +19,7 @@ TEST(CoulombLaw, MuIsConstant) {
   const CoulombLaw l{0.3, 0.5};
   EXPECT_EQ(l.mu(0.0), 0.3);
   EXPECT_EQ(l.mu(1.0), 0.3);
-  EXPECT_EQ(friction_coefficient(FrictionLaw{l}, 123.0), 0.3);
+  EXPECT_EQ(friction_coefficient(FrictionLaw{l}, 123.0, 1.0), 0.3);
 }
 
 TEST(CoulombLaw, SticksInsideTheCone) {

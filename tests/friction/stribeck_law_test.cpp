@@ -35,7 +35,7 @@ TEST(StribeckMu, HydrodynamicFromScToSlim) {
   EXPECT_NEAR(l.mu(0.01), 0.2059702752337366, 8 * kEps * 0.21);
   EXPECT_NEAR(l.mu(0.05), 0.5242315439574966, 8 * kEps * 0.52);
   EXPECT_NEAR(StribeckLaw::hydrodynamic_mu(0.01), 0.2059702752337366, 8 * kEps * 0.21);
-  EXPECT_EQ(friction_coefficient(FrictionLaw{l}, 0.01), l.mu(0.01));
+  EXPECT_EQ(friction_coefficient(FrictionLaw{l}, 0.01, 1.0), l.mu(0.01));
 }
 
 TEST(StribeckMu, CappedBeyondSlim) {

@@ -127,7 +127,12 @@ def settings_caption(out, rows, swept):
         run = config["run"]
         parts.append(f"strain {run['strain']:g} (averaged after {run['transient_strain']:g})")
         fr = config["friction"]
-        parts.append(f"{fr['law']} law, $s_c$ = {fr['s_c']:g}, $s_{{lim}}$ = {fr['s_lim']:g}")
+        if fr["law"] == "critical_load":  # reads the load, not s (docs/model.md "Friction")
+            parts.append(f"critical_load law, $F^*$ = {fr['critical_load']:g} "
+                         r"$\eta_f^2/\rho_p$")
+        else:
+            parts.append(f"{fr['law']} law, $s_c$ = {fr['s_c']:g}, "
+                         f"$s_{{lim}}$ = {fr['s_lim']:g}")
         parts.append(f"solver tolerance {config['solver']['tolerance']:g}")
     parts.append("swept: " + (", ".join(swept) if swept else "nothing"))
     text = "; ".join(parts)
@@ -268,8 +273,9 @@ def fig1b(out, rows, curve, colours, swept):
 
 
 def friction_law(law, s, mu0, s_c, s_lim):
-    """mu(s): the paper's Eq. 1 (stribeck, held at s_lim beyond), or mu0 (coulomb)."""
-    if law == "coulomb":
+    """mu(s): the paper's Eq. 1 (stribeck, held at s_lim beyond), or mu0 (coulomb;
+    critical_load, whose mu0 holds from the critical load on: it does not read s)."""
+    if law in ("coulomb", "critical_load"):
         return np.full_like(s, mu0)
     hd = lambda x: 2 * np.pi * x * np.log(5 / (6 * np.pi * x))  # noqa: E731
     return np.where(s < s_c, mu0, np.where(s < s_lim, hd(np.minimum(s, s_lim)), hd(s_lim)))
