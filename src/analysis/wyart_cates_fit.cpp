@@ -12,7 +12,7 @@
 namespace dilatant::analysis {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kNotFitted = std::numeric_limits<double>::quiet_NaN();
 // The starting grid: sigma* over the measured stresses, phi_0 from the
 // largest phi + 1e-3 to + 0.25 (log-spaced: the viscosity is most sensitive
 // close to it), phi_m from 0.1 below the smallest phi up to phi_0.
@@ -22,7 +22,7 @@ constexpr double kPhi0Low = 1e-3, kPhi0High = 0.25, kPhiMBelow = 0.1;
 // references); the bound keeps a poorly constrained fit from running away.
 constexpr double kMaxExponent = 20.0;
 
-struct Datum {
+struct LogViscosityPoint {
   double phi = 0.0;
   double sigma = 0.0;
   double ln_eta = 0.0;
@@ -30,9 +30,9 @@ struct Datum {
 };
 
 // Parameters theta = (phi_0, phi_m, ln sigma*, ln A[, alpha][, beta]).
-class Problem {
+class WyartCatesProblem {
  public:
-  Problem(std::vector<Datum> data, const WyartCatesSettings& settings)
+  WyartCatesProblem(std::vector<LogViscosityPoint> data, const WyartCatesSettings& settings)
       : data_(std::move(data)), settings_(settings) {
     alpha_slot_ = settings.fit_alpha ? 4 : -1;
     beta_slot_ = settings.fit_beta ? (settings.fit_alpha ? 5 : 4) : -1;
@@ -41,7 +41,7 @@ class Problem {
   std::size_t parameters() const {
     return 4 + (alpha_slot_ >= 0 ? 1 : 0) + (beta_slot_ >= 0 ? 1 : 0);
   }
-  const std::vector<Datum>& data() const { return data_; }
+  const std::vector<LogViscosityPoint>& data() const { return data_; }
   int alpha_slot() const { return alpha_slot_; }
   int beta_slot() const { return beta_slot_; }
 
@@ -60,7 +60,7 @@ class Problem {
     if (!(p.phi_0 > 0.0 && p.phi_0 < 1.0 && p.phi_m > 0.0 && p.phi_m < 1.0)) return false;
     if (!(p.alpha > 0.0 && p.alpha < kMaxExponent && p.beta > 0.0 && p.beta < kMaxExponent))
       return false;
-    for (const Datum& d : data_)
+    for (const LogViscosityPoint& d : data_)
       if (!(d.phi < jamming_fraction(p, d.sigma))) return false;
     return true;
   }
@@ -78,7 +78,7 @@ class Problem {
     if (jacobian) jacobian->setZero(n, static_cast<Eigen::Index>(parameters()));
     const double delta = p.phi_0 - p.phi_m;
     for (Eigen::Index i = 0; i < n; ++i) {
-      const Datum& d = data_[static_cast<std::size_t>(i)];
+      const LogViscosityPoint& d = data_[static_cast<std::size_t>(i)];
       const double log_ratio = std::log(p.sigma_star / d.sigma);
       const double x = std::exp(p.beta * log_ratio);
       const double f = std::exp(-x);
@@ -101,22 +101,20 @@ class Problem {
   }
 
  private:
-  std::vector<Datum> data_;
+  std::vector<LogViscosityPoint> data_;
   WyartCatesSettings settings_;
   int alpha_slot_ = -1;
   int beta_slot_ = -1;
 };
 
 // The points that enter the fit, with s_i (see the header).
-std::vector<Datum> fitted_points(const std::vector<FlowCurve>& curves,
-                                 const WyartCatesSettings& settings, bool& weighted) {
-  std::vector<Datum> data;
+std::vector<LogViscosityPoint> points_to_fit(const std::vector<FlowCurve>& curves,
+                                             const WyartCatesSettings& settings, bool& weighted) {
+  std::vector<LogViscosityPoint> data;
   weighted = true;
   for (const FlowCurve& c : curves) {
     for (const FlowPoint& p : c.points) {
-      if (!p.valid || p.jammed || !(p.viscosity > 0.0) || !std::isfinite(p.viscosity) ||
-          !(p.shear_stress > 0.0))
-        continue;
+      if (!wyart_cates_fits_point(p)) continue;
       const double relative = p.shear_rate > 0.0 ? p.shear_rate_err / p.shear_rate : 0.0;
       weighted = weighted && relative > 0.0;
       data.push_back(
@@ -124,16 +122,16 @@ std::vector<Datum> fitted_points(const std::vector<FlowCurve>& curves,
     }
   }
   if (!weighted)
-    for (Datum& d : data) d.s = 1.0;
+    for (LogViscosityPoint& d : data) d.s = 1.0;
   return data;
 }
 
 // The best node of the starting grid; ln A at each node is the weighted mean
 // of ln eta + alpha ln u, the value that minimises the cost there.
-Eigen::VectorXd starting_point(const Problem& problem, const WyartCatesSettings& settings) {
+Eigen::VectorXd grid_start(const WyartCatesProblem& problem, const WyartCatesSettings& settings) {
   const auto& data = problem.data();
   double phi_lo = 1.0, phi_hi = 0.0, s_lo = INFINITY, s_hi = 0.0;
-  for (const Datum& d : data) {
+  for (const LogViscosityPoint& d : data) {
     phi_lo = std::min(phi_lo, d.phi);
     phi_hi = std::max(phi_hi, d.phi);
     s_lo = std::min(s_lo, d.sigma);
@@ -182,11 +180,16 @@ Eigen::VectorXd starting_point(const Problem& problem, const WyartCatesSettings&
 
 }  // namespace
 
-double WyartCatesFit::chi2_per_dof() const {
-  return points > parameters ? chi2 / static_cast<double>(points - parameters) : kNaN;
+bool wyart_cates_fits_point(const FlowPoint& p) {
+  return p.valid && !p.jammed && p.viscosity > 0.0 && std::isfinite(p.viscosity) &&
+         p.shear_stress > 0.0;
 }
 
-WyartCatesParameters WyartCatesFit::parameters_value() const {
+double WyartCatesFit::chi2_per_dof() const {
+  return points > parameters ? chi2 / static_cast<double>(points - parameters) : kNotFitted;
+}
+
+WyartCatesParameters WyartCatesFit::model() const {
   return {phi_0.value, phi_m.value, sigma_star.value, A.value, alpha.value, beta.value};
 }
 
@@ -194,9 +197,9 @@ WyartCatesOutcome fit_wyart_cates(const std::vector<FlowCurve>& curves,
                                   const WyartCatesSettings& settings) {
   WyartCatesOutcome out;
   bool weighted = false;
-  std::vector<Datum> data = fitted_points(curves, settings, weighted);
+  std::vector<LogViscosityPoint> data = points_to_fit(curves, settings, weighted);
   std::vector<double> phis;
-  for (const Datum& d : data)
+  for (const LogViscosityPoint& d : data)
     if (std::find(phis.begin(), phis.end(), d.phi) == phis.end()) phis.push_back(d.phi);
   std::sort(phis.begin(), phis.end());
   if (phis.size() < 2) {
@@ -206,7 +209,7 @@ WyartCatesOutcome fit_wyart_cates(const std::vector<FlowCurve>& curves,
         phis.size(), phis.size() == 1 ? "" : "s");
     return out;
   }
-  const Problem problem(std::move(data), settings);
+  const WyartCatesProblem problem(std::move(data), settings);
   const std::size_t points = problem.data().size();
   if (points <= problem.parameters()) {
     out.why_not = fmt::format("{} flowing points for {} parameters; needs at least {}", points,
@@ -216,7 +219,7 @@ WyartCatesOutcome fit_wyart_cates(const std::vector<FlowCurve>& curves,
   const LeastSquaresProblem least_squares{
       [&](const Eigen::VectorXd& t, Eigen::MatrixXd* j) { return problem.residuals(t, j); },
       [&](const Eigen::VectorXd& t) { return problem.feasible(t); }};
-  const Eigen::VectorXd start = starting_point(problem, settings);
+  const Eigen::VectorXd start = grid_start(problem, settings);
   if (!problem.feasible(start)) {
     out.why_not = "no starting point of the grid keeps every point below phi_J";
     return out;
@@ -233,14 +236,18 @@ WyartCatesOutcome fit_wyart_cates(const std::vector<FlowCurve>& curves,
   fit.weighted = weighted;
   fit.chi2 = r.squaredNorm();
   fit.stress_low = INFINITY;
-  for (const Datum& d : problem.data()) {
+  for (const LogViscosityPoint& d : problem.data()) {
     fit.stress_low = std::min(fit.stress_low, d.sigma);
     fit.stress_high = std::max(fit.stress_high, d.sigma);
   }
   // Unweighted: the scatter is measured from the residuals (scale = chi2/dof).
   const double scale = weighted ? std::max(1.0, fit.chi2_per_dof()) : fit.chi2_per_dof();
   const Eigen::MatrixXd cov = least_squares_covariance(J, scale);
-  const auto se = [&](int k) { return k < 0 ? kNaN : std::sqrt(cov(k, k)); };
+  const auto se = [&](int k) { return k < 0 ? kNotFitted : std::sqrt(cov(k, k)); };
+  fit.names = {"phi_0", "phi_m", "ln_sigma_star", "ln_A"};
+  if (settings.fit_alpha) fit.names.emplace_back("alpha");
+  if (settings.fit_beta) fit.names.emplace_back("beta");
+  fit.covariance = cov;
   const WyartCatesParameters p = problem.model(theta);
   fit.phi_0 = {p.phi_0, se(0)};
   fit.phi_m = {p.phi_m, se(1)};

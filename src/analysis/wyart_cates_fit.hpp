@@ -29,6 +29,7 @@
 // how the viscosity grows with phi), no more points than parameters, or a
 // fitted sigma* outside the measured stresses (the curves do not cross the
 // onset of frictional contacts, so sigma* and phi_m are not determined).
+#include <Eigen/Dense>
 #include <optional>
 #include <string>
 #include <vector>
@@ -59,15 +60,23 @@ struct WyartCatesFit {
   double stress_high = 0.0;
   bool weighted = false;             // s_i from the rate errors; else 1
   double rms_log10_deviation = 0.0;  // of eta from the model, in decades
+  // The covariance of the fitted parameters, in the order of `names` (of
+  // phi_0, phi_m, ln_sigma_star, ln_A, alpha, beta: those fitted), as scaled
+  // for the errors above; for the errors of what the fit implies (phi_DST).
+  std::vector<std::string> names;
+  Eigen::MatrixXd covariance;
 
   double chi2_per_dof() const;
-  WyartCatesParameters parameters_value() const;
+  WyartCatesParameters model() const;
 };
 
 struct WyartCatesOutcome {
   std::optional<WyartCatesFit> fit;
   std::string why_not;
 };
+
+// Whether a point enters the fit: valid, flowing, with a positive viscosity.
+bool wyart_cates_fits_point(const FlowPoint& p);
 
 // The curves of one sample (their `sample` names are not read).
 WyartCatesOutcome fit_wyart_cates(const std::vector<FlowCurve>& curves,

@@ -8,8 +8,8 @@
 namespace dilatant::analysis {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
+constexpr double kDiverges = std::numeric_limits<double>::infinity();
 
 // The scans below run over t = ln x, x = (sigma*/sigma)^beta: from x = e^-18
 // (sigma far above sigma*, f = 1 to 1e-8) to x = 50 (f = e^-50: frictionless).
@@ -18,21 +18,21 @@ constexpr double kHighT = 3.912;  // ln 50
 constexpr int kScanNodes = 2400;
 constexpr int kBisections = 80;
 
-double delta(const WyartCatesParameters& p) { return p.phi_0 - p.phi_m; }
+double friction_span(const WyartCatesParameters& p) { return p.phi_0 - p.phi_m; }
 
 // Eq. (*) of the header at x: d ln eta / d ln sigma.
 double slope_at_x(const WyartCatesParameters& p, double phi, double x) {
   const double e = std::exp(-x);
-  const double phi_j = p.phi_0 - delta(p) * e;
-  if (!(phi < phi_j)) return kInf;
-  return p.alpha * p.beta * phi * delta(p) * x * e / (phi_j * (phi_j - phi));
+  const double phi_j = p.phi_0 - friction_span(p) * e;
+  if (!(phi < phi_j)) return kDiverges;
+  return p.alpha * p.beta * phi * friction_span(p) * x * e / (phi_j * (phi_j - phi));
 }
 
 // The smallest t at which the suspension flows: ln x_SJ for phi >= phi_m (x
 // beyond which phi_J > phi), else the scan's lower end.
 double lowest_flowing_t(const WyartCatesParameters& p, double phi) {
   if (phi < p.phi_m) return kLowT;
-  const double x_sj = std::log(delta(p) / (p.phi_0 - phi));
+  const double x_sj = std::log(friction_span(p) / (p.phi_0 - phi));
   return std::log(x_sj);
 }
 
@@ -63,14 +63,14 @@ double crossing(const WyartCatesParameters& p, double phi, double a, double b) {
   return 0.5 * (a + b);
 }
 
-struct Peak {
-  double t = kNaN;
-  double slope = -kInf;
+struct SlopePeak {
+  double t = kNoValue;
+  double slope = -kDiverges;
 };
 
 // The largest slope over the flowing stresses at phi < phi_m: a scan, then a
 // golden-section search between the best node's neighbours.
-Peak peak_slope(const WyartCatesParameters& p, double phi) {
+SlopePeak peak_slope(const WyartCatesParameters& p, double phi) {
   const std::vector<double> t = scan_nodes(p, phi);
   std::size_t best = 0;
   for (std::size_t k = 1; k < t.size(); ++k)
@@ -101,7 +101,7 @@ double jamming_fraction(const WyartCatesParameters& p, double sigma) {
 
 double wyart_cates_viscosity(const WyartCatesParameters& p, double phi, double sigma) {
   const double phi_j = jamming_fraction(p, sigma);
-  if (!(phi < phi_j)) return kInf;
+  if (!(phi < phi_j)) return kDiverges;
   return p.A * std::pow(1.0 - phi / phi_j, -p.alpha);
 }
 
@@ -110,14 +110,14 @@ double thickening_slope(const WyartCatesParameters& p, double phi, double sigma)
 }
 
 double shear_jamming_stress(const WyartCatesParameters& p, double phi) {
-  if (!(p.phi_m < p.phi_0) || phi < p.phi_m) return kInf;
+  if (!(p.phi_m < p.phi_0) || phi < p.phi_m) return kDiverges;
   if (phi >= p.phi_0) return 0.0;
   // phi_J(sigma) = phi  <=>  e^(-x) = (phi_0 - phi)/Delta.
-  return p.sigma_star * std::pow(std::log(delta(p) / (p.phi_0 - phi)), -1.0 / p.beta);
+  return p.sigma_star * std::pow(std::log(friction_span(p) / (p.phi_0 - phi)), -1.0 / p.beta);
 }
 
 TurningRange turning_range(const WyartCatesParameters& p, double phi) {
-  TurningRange none{kNaN, kNaN};
+  TurningRange none{kNoValue, kNoValue};
   if (!(p.phi_m < p.phi_0) || phi >= p.phi_0) return none;
   const std::vector<double> t = scan_nodes(p, phi);
   const auto above = [&](double tk) { return slope_at_x(p, phi, std::exp(tk)) > 1.0; };
@@ -140,11 +140,11 @@ TurningRange turning_range(const WyartCatesParameters& p, double phi) {
 }
 
 DstOnset dst_onset(const WyartCatesParameters& p) {
-  if (!(p.phi_m < p.phi_0)) return {kNaN, kNaN};
+  if (!(p.phi_m < p.phi_0)) return {kNoValue, kNoValue};
   // The peak slope grows with phi at every x (Eq. (*): phi/(phi_J (phi_J - phi))
   // does), so the lowest phi where it reaches 1 is found by bisection.
   double lo = 0.0, hi = p.phi_m * (1.0 - 1e-12);
-  if (peak_slope(p, hi).slope <= 1.0) return {p.phi_m, kInf};
+  if (peak_slope(p, hi).slope <= 1.0) return {p.phi_m, kDiverges};
   for (int k = 0; k < kBisections; ++k) {
     const double m = 0.5 * (lo + hi);
     (peak_slope(p, m).slope > 1.0 ? hi : lo) = m;

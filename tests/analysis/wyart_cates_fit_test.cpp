@@ -32,10 +32,9 @@ std::vector<FlowCurve> curves(const WyartCatesParameters& p, const std::vector<d
   std::vector<FlowCurve> out;
   const int n = static_cast<int>(std::lround(6.0 * std::log10(high / low)));
   for (const double phi : phis) {
-    FlowCurve c;
-    c.source = "synthetic";
-    c.sample = "S";
-    c.phi = phi;
+    // Strings constructed, not assigned: GCC 12 at -O3 reports a false
+    // -Wstringop-overflow on assigning a literal here (GCC bug 105329).
+    FlowCurve c{std::string("synthetic"), std::string("S"), phi, std::nullopt, {}};
     for (int k = 0; k <= n; ++k) {
       FlowPoint pt;
       pt.shear_stress = p.sigma_star * low * std::pow(high / low, k / static_cast<double>(n));
