@@ -42,10 +42,9 @@ prints after "dilatant: error: ". The compiled engine is dilatant._core
 """
 __all__ = [
     "AnalysisResult", "Config", "ConfigError", "Result", "Scene", "Sediment", "ShearCell",
-    "SweepResult",
-    "__version__", "analyze", "load_config", "phase_diagram", "predict", "read_table",
-    "rheometer_steps",
-    "run", "sweep",
+    "SweepResult", "WyartCatesResult",
+    "__version__", "analyze", "fit_wyart_cates", "load_config", "phase_diagram", "predict",
+    "read_table", "rheometer_steps", "run", "sweep",
 ]
 
 try:
@@ -78,5 +77,6 @@ else:
     from .scene import Scene, Sediment
     from .runs import Result, run
     from .sweeps import SweepResult, sweep
-    from .rheology import AnalysisResult, analyze, phase_diagram, predict, rheometer_steps
+    from .rheology import (AnalysisResult, WyartCatesResult, analyze, fit_wyart_cates,
+                           phase_diagram, predict, rheometer_steps)
     from .tables import read_table

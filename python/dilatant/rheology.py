@@ -1,5 +1,6 @@
-"""The rheometer analysis (`dilatant analyze`, docs/analysis.md) and the
-regime predictor (`dilatant predict`, docs/jamming.md)."""
+"""The rheometer analysis (`dilatant analyze`, docs/analysis.md), the
+Wyart–Cates fit (`dilatant analyze --model wyart-cates`) and the regime
+predictor (`dilatant predict`, docs/jamming.md)."""
 import json
 import os
 import tempfile
@@ -61,11 +62,73 @@ def rheometer_steps(file):
     return _core.rheometer_steps(Path(file))
 
 
-def predict(mu0, phi, s_c=None, table=None):
+class WyartCatesResult:
+    """fit: wyart_cates.json (per sample phi_0, phi_m, sigma_star, A, alpha, beta
+    with errors, chi2_per_dof, and `dst`: phi_dst with its error); curves:
+    wyart_cates_curves.csv (data and model, the overlay); map:
+    wyart_cates_map.csv (the flow states the fit implies over phi); out: the
+    folder (None with out=None)."""
+
+    def __init__(self, folder, keep):
+        folder = Path(folder)
+        self.out = folder if keep else None
+        self.fit = json.loads((folder / "wyart_cates.json").read_text())
+        self.curves = read_table(folder / "wyart_cates_curves.csv")
+        self.map = read_table(folder / "wyart_cates_map.csv")
+
+    def __repr__(self):
+        fitted = sum(1 for s in self.fit["samples"].values() if s["fitted"])
+        return f"<dilatant.WyartCatesResult {fitted} fitted samples, {self.out or 'not kept'}>"
+
+
+def fit_wyart_cates(input, out=None, *, alpha=None, beta=None, fit_alpha=False, fit_beta=False,
+                    plots=True):
+    """Fits the Wyart–Cates model (phi_0, phi_m, sigma*, A; alpha and beta held
+    at 2 and 1 unless fit_alpha/fit_beta, or held at the values given) to each
+    sample of a manifest (.toml) or a sweep's flowcurves.csv, as `dilatant
+    analyze --model wyart-cates`; returns a WyartCatesResult. out=None: nothing
+    is kept (and no plot). No sample fitted raises ConfigError with each
+    sample's reason."""
+    settings = dict(alpha=alpha, beta=beta, fit_alpha=bool(fit_alpha), fit_beta=bool(fit_beta))
+    if out is None:
+        with tempfile.TemporaryDirectory(prefix="dilatant-") as folder:
+            _core.fit_wyart_cates(Path(input), folder, **settings)
+            return WyartCatesResult(folder, keep=False)
+    _core.fit_wyart_cates(Path(input), os.fspath(out), **settings)
+    if plots:
+        try:
+            from .plots import wyart_cates as wyart_cates_plots
+            wyart_cates_plots.draw(out)
+        except ImportError as e:
+            warnings.warn(f"plot skipped ({e}); the tables are complete", RuntimeWarning,
+                          stacklevel=2)
+    return WyartCatesResult(out, keep=True)
+
+
+def predict(mu0=None, phi=None, s_c=None, table=None, *, model=None, stress=None, sample=None):
     """The flow regime ('cst', 'dst', 'no_flow') of spheres with friction mu0
     at volume fraction phi, with the margins and the onset scale: the dict of
     `dilatant predict --json`. s_c None: the Stribeck default; table None: the
-    built-in phi_max_BL(mu0)."""
+    built-in phi_max_BL(mu0).
+
+    With model (a wyart_cates.json of fit_wyart_cates or `analyze --model
+    wyart-cates`): the regime from that fit instead ('cst', 'dst',
+    'shear_jamming', 'no_flow'), and with stress the state of the
+    stress-controlled flow there: the dict of `dilatant predict --model FILE
+    --json`; sample chooses among several fitted samples. `source` in the
+    dict says which answered."""
+    if phi is None:
+        raise TypeError("predict() needs phi")
+    if model is not None:
+        if mu0 is not None or table is not None or s_c is not None:
+            raise TypeError("predict(): model= answers from the fit; mu0, s_c and table are "
+                            "the table's")
+        return _core.predict_from_fit(Path(model), float(phi),
+                                      None if stress is None else float(stress), sample or "")
+    if stress is not None or sample is not None:
+        raise TypeError("predict(): stress and sample need model=")
+    if mu0 is None:
+        raise TypeError("predict() needs mu0 (or model=)")
     return _core.predict(float(mu0), float(phi), s_c, None if table is None else Path(table))
 
 

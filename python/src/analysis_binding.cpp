@@ -1,4 +1,5 @@
-// The rheometer analysis (analysis/analysis.hpp, `dilatant analyze`).
+// The rheometer analysis (analysis/analysis.hpp, `dilatant analyze`) and the
+// Wyart–Cates fit (analysis/wyart_cates_report.hpp, `analyze --model wyart-cates`).
 // Settings are checked here with the names Python spells them
 // (onset_factor=..., not --onset-factor).
 #include <fmt/format.h>
@@ -11,8 +12,10 @@
 #include "analysis/analysis.hpp"
 #include "analysis/report_files.hpp"
 #include "analysis/rheometer_file.hpp"
+#include "analysis/wyart_cates_report.hpp"
 #include "bindings.hpp"
 #include "io/input_error.hpp"
+#include "io/output_folder.hpp"
 
 namespace py = pybind11;
 
@@ -76,12 +79,52 @@ py::list rheometer_steps(const std::filesystem::path& file) {
   return steps;
 }
 
+// The Wyart–Cates fit of every sample (analysis/wyart_cates_report.hpp):
+// writes wyart_cates.json, wyart_cates_curves.csv and wyart_cates_map.csv into
+// `out`; returns the numbers of samples and of fitted ones. No sample fitted
+// is a ConfigError naming each one's reason, as the CLI's exit 2.
+py::dict fit_wyart_cates(const std::filesystem::path& input, const std::filesystem::path& out,
+                         std::optional<double> alpha, std::optional<double> beta, bool fit_alpha,
+                         bool fit_beta) {
+  analysis::WyartCatesSettings s;
+  s.alpha = alpha.value_or(s.alpha);
+  s.beta = beta.value_or(s.beta);
+  s.fit_alpha = fit_alpha;
+  s.fit_beta = fit_beta;
+  check(s.alpha > 0.0 && s.alpha < 20.0, "alpha", s.alpha, "must be in (0, 20)");
+  check(s.beta > 0.0 && s.beta < 20.0, "beta", s.beta, "must be in (0, 20)");
+  std::size_t samples = 0, fitted = 0;
+  {
+    py::gil_scoped_release release;
+    const analysis::WyartCatesReport report =
+        analysis::wyart_cates_report(analysis::load_analysis_input(input), s);
+    std::string why;
+    for (const auto& sample : report.samples) {
+      ++samples;
+      if (sample.outcome.fit)
+        ++fitted;
+      else
+        why +=
+            fmt::format("{}{}: {}", why.empty() ? "" : "; ", sample.sample, sample.outcome.why_not);
+    }
+    if (fitted == 0) throw InputError(fmt::format("no sample could be fitted ({})", why));
+    prepare_output_folder(out);
+    analysis::write_wyart_cates_files(report, out);
+  }
+  py::dict d;
+  d["samples"] = samples;
+  d["fitted"] = fitted;
+  return d;
+}
+
 }  // namespace
 
 void bind_analysis(py::module_& m) {
   m.def("analyse", &analyse, py::arg("input"), py::arg("out"), py::arg("onset_factor"),
         py::arg("dst_n_cap"), py::arg("min_window_points"), py::arg("confidence"));
   m.def("rheometer_steps", &rheometer_steps, py::arg("file"));
+  m.def("fit_wyart_cates", &fit_wyart_cates, py::arg("input"), py::arg("out"), py::arg("alpha"),
+        py::arg("beta"), py::arg("fit_alpha"), py::arg("fit_beta"));
 }
 
 }  // namespace dilatant::python

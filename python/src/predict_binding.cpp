@@ -1,16 +1,22 @@
 // The regime predictor (analysis/prediction_report.hpp, `dilatant predict`)
-// and its phase diagram (analysis/phase_diagram.hpp, `predict --grid`).
+// and its phase diagram (analysis/phase_diagram.hpp, `predict --grid`), and the
+// answer from a Wyart–Cates fit (`predict --model FILE`).
+#include <fmt/format.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <cmath>
 #include <optional>
+#include <string>
 
 #include "analysis/phase_diagram.hpp"
 #include "analysis/prediction_report.hpp"
+#include "analysis/wyart_cates_prediction.hpp"
 #include "bindings.hpp"
 #include "friction/defaults.hpp"
 #include "io/atomic_file.hpp"
+#include "io/input_error.hpp"
 #include "io/output_folder.hpp"
 
 namespace py = pybind11;
@@ -42,10 +48,24 @@ void phase_diagram(const std::filesystem::path& out,
                         analysis::phase_diagram_csv(table_of(table), {}));
 }
 
+// The regime from a Wyart–Cates fit (analysis/wyart_cates_prediction.hpp),
+// as `dilatant predict --model FILE --json`.
+py::object predict_from_fit(const std::filesystem::path& model, double phi,
+                            std::optional<double> stress, const std::string& sample) {
+  if (!(phi > 0.0 && phi < 1.0)) throw InputError(fmt::format("phi {}: must be in (0, 1)", phi));
+  if (stress && !(*stress > 0.0 && std::isfinite(*stress)))
+    throw InputError(fmt::format("stress {}: must be a finite number > 0", *stress));
+  const auto fit = analysis::read_fitted_wyart_cates(model, sample, "sample");
+  const std::string text = analysis::wyart_cates_prediction(fit, phi, stress).dump();
+  return py::module_::import("json").attr("loads")(text);
+}
+
 }  // namespace
 
 void bind_predict(py::module_& m) {
   m.def("predict", &predict, py::arg("mu0"), py::arg("phi"), py::arg("s_c"), py::arg("table"));
+  m.def("predict_from_fit", &predict_from_fit, py::arg("model"), py::arg("phi"), py::arg("stress"),
+        py::arg("sample"));
   m.def("phase_diagram", &phase_diagram, py::arg("out"), py::arg("table"));
 }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "analysis/levenberg_marquardt.hpp"
 #include "analysis/polynomial_fit.hpp"
 
 namespace dilatant::analysis {
@@ -17,7 +18,6 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kGridLow = 1e-4;
 constexpr double kGridHigh = 0.3;
 constexpr int kGridNodes = 120;
-constexpr int kMaxIterations = 500;
 
 double largest_phi(const PhiSeries& s) {
   double m = 0.0;
@@ -155,45 +155,6 @@ Eigen::VectorXd starting_point(const Problem& problem) {
   return theta;
 }
 
-// Levenberg-Marquardt with Marquardt's diagonal scaling.
-Eigen::VectorXd minimise(const Problem& problem, Eigen::VectorXd theta) {
-  double lambda = 1e-3;
-  Eigen::MatrixXd J;
-  Eigen::VectorXd r = problem.residuals(theta, &J);
-  double cost = r.squaredNorm();
-  for (int iter = 0; iter < kMaxIterations; ++iter) {
-    const Eigen::MatrixXd H = J.transpose() * J;
-    const Eigen::VectorXd g = J.transpose() * r;
-    bool accepted = false;
-    double new_cost = cost;
-    Eigen::VectorXd step;
-    while (!accepted && lambda < 1e16) {
-      Eigen::MatrixXd damped = H;
-      for (Eigen::Index k = 0; k < H.rows(); ++k) damped(k, k) += lambda * std::max(H(k, k), 1e-12);
-      step = damped.ldlt().solve(-g);
-      const Eigen::VectorXd trial = theta + step;
-      if (problem.feasible(trial)) {
-        const Eigen::VectorXd trial_r = problem.residuals(trial, nullptr);
-        new_cost = trial_r.squaredNorm();
-        if (std::isfinite(new_cost) && new_cost <= cost) {
-          theta = trial;
-          accepted = true;
-          lambda = std::max(lambda / 3.0, 1e-12);
-          break;
-        }
-      }
-      lambda *= 4.0;
-    }
-    if (!accepted) break;  // no downhill step left: at the minimum
-    const bool small_gain = cost - new_cost <= 1e-14 * std::max(cost, 1e-300);
-    const bool small_step = step.norm() <= 1e-12 * (1.0 + theta.norm());
-    r = problem.residuals(theta, &J);
-    cost = new_cost;
-    if (small_gain || small_step) break;
-  }
-  return theta;
-}
-
 }  // namespace
 
 double divergence_model(double phi, double phi_max, double A, double alpha) {
@@ -231,7 +192,10 @@ DivergenceOutcome fit_divergence(const std::vector<PhiSeries>& series) {
   }
 
   const Problem problem(series);
-  const Eigen::VectorXd theta = minimise(problem, starting_point(problem));
+  const LeastSquaresProblem least_squares{
+      [&](const Eigen::VectorXd& t, Eigen::MatrixXd* j) { return problem.residuals(t, j); },
+      [&](const Eigen::VectorXd& t) { return problem.feasible(t); }};
+  const Eigen::VectorXd theta = levenberg_marquardt(least_squares, starting_point(problem));
   Eigen::MatrixXd J;
   const Eigen::VectorXd r = problem.residuals(theta, &J);
 
@@ -240,8 +204,7 @@ DivergenceOutcome fit_divergence(const std::vector<PhiSeries>& series) {
   fit.parameters = problem.parameters();
   fit.chi2 = r.squaredNorm();
   const double scale = std::max(1.0, fit.chi2_per_dof());
-  const Eigen::MatrixXd cov =
-      (J.transpose() * J).completeOrthogonalDecomposition().pseudoInverse() * scale;
+  const Eigen::MatrixXd cov = least_squares_covariance(J, scale);
   const auto se = [&](int k) { return std::sqrt(cov(k, k)); };
   fit.A = {std::exp(theta[0]), std::exp(theta[0]) * se(0)};
   fit.alpha = {theta[1], se(1)};

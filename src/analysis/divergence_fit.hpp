@@ -4,11 +4,12 @@
 //
 //     n - 1 = A x^(-alpha),    x = (phi_max - phi) / phi_max,
 //
-// fitted by weighted nonlinear least squares (Levenberg-Marquardt) of n itself,
-// with weights 1/sigma_n^2 from the per-curve fits. A and alpha are common to
-// all the series given; each series (a sample, i.e. a coating or a mu0) has its
-// own phi_max, either given (a measured value, held fixed) or fitted. One series
-// is the per-sample fit; all series together are the master-curve collapse.
+// fitted by weighted nonlinear least squares (Levenberg-Marquardt,
+// levenberg_marquardt.hpp) of n itself, with weights 1/sigma_n^2 from the
+// per-curve fits. A and alpha are common to all the series given; each series
+// (a sample, i.e. a coating or a mu0) has its own phi_max, either given (a
+// measured value, held fixed) or fitted. One series is the per-sample fit; all
+// series together are the master-curve collapse.
 //
 // Uncertainties come from the covariance (J^T W J)^-1 at the optimum, scaled by
 // chi2/dof when the scatter exceeds the error bars (never scaled down). A is

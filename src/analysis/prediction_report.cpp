@@ -64,6 +64,7 @@ PredictionReport predict(const JammingTable& table, double mu0, double phi, doub
 nlohmann::json prediction_json(const PredictionReport& r, const std::string& table_name) {
   const Prediction& p = r.regime;
   nlohmann::json j;
+  j["source"] = "jamming table";  // the other: "wyart-cates fit" (wyart_cates_prediction.hpp)
   j["mu0"] = r.mu0;
   j["phi"] = r.phi;
   j["regime"] = flow_regime_name(p.regime);

@@ -5,13 +5,17 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <optional>
+#include <utility>
 
 #include "analysis/analysis.hpp"
 #include "analysis/analysis_input.hpp"
 #include "analysis/report_files.hpp"
 #include "analysis/rheometer_file.hpp"
+#include "analysis/wyart_cates_report.hpp"
 #include "app/python_script.hpp"
 #include "io/input_error.hpp"
+#include "io/output_folder.hpp"
 
 namespace dilatant {
 
@@ -51,6 +55,24 @@ CLI::App* add_analyze_command(CLI::App& app, AnalyzeCommandArgs& args) {
       ->capture_default_str();
   cmd->add_option("--confidence", s.confidence, "Level of the intervals n_low..n_high, in (0, 1)")
       ->capture_default_str();
+  auto& wc = args.wyart_cates;
+  auto* model = cmd->add_option("--model", args.model,
+                                "Also fit a model of thickening to the flow curves of each "
+                                "sample at several phi: wyart-cates (phi_0, phi_m, sigma*, A; "
+                                "writes wyart_cates.json, the overlay and the flow-state map)")
+                    ->check(CLI::IsMember({"wyart-cates"}));
+  cmd->add_option("--alpha", wc.alpha,
+                  "Wyart-Cates: exponent of eta = A (1 - phi/phi_J)^-alpha, held (or the start "
+                  "with --fit-alpha; > 0)")
+      ->capture_default_str()
+      ->needs(model);
+  cmd->add_option("--beta", wc.beta,
+                  "Wyart-Cates: exponent of f = exp(-(sigma*/sigma)^beta), held (or the start "
+                  "with --fit-beta; > 0)")
+      ->capture_default_str()
+      ->needs(model);
+  cmd->add_flag("--fit-alpha", wc.fit_alpha, "Wyart-Cates: fit alpha too")->needs(model);
+  cmd->add_flag("--fit-beta", wc.fit_beta, "Wyart-Cates: fit beta too")->needs(model);
   return cmd;
 }
 
@@ -65,6 +87,12 @@ void check_settings(const analysis::AnalysisSettings& s) {
   if (s.min_window_points < 3) fail("--min-window-points", s.min_window_points, "must be >= 3");
   if (!(s.confidence > 0.0 && s.confidence < 1.0))
     fail("--confidence", s.confidence, "must be in (0, 1)");
+}
+
+void check_model_settings(const analysis::WyartCatesSettings& s) {
+  for (const auto& [option, value] : {std::pair{"--alpha", s.alpha}, std::pair{"--beta", s.beta}})
+    if (!(value > 0.0 && value < 20.0))
+      throw InputError(fmt::format("{} = {}: must be in (0, 20)", option, value));
 }
 
 std::string with_error(const analysis::Estimate& e, const char* format) {
@@ -105,6 +133,37 @@ void print_summary(const analysis::AnalysisReport& r, const std::filesystem::pat
   }
 }
 
+void print_model_summary(const analysis::WyartCatesReport& r) {
+  const auto& st = r.settings;
+  std::cout << fmt::format("  Wyart-Cates fit (alpha {}, beta {}):\n",
+                           st.fit_alpha ? "fitted" : fmt::format("{:g} fixed", st.alpha),
+                           st.fit_beta ? "fitted" : fmt::format("{:g} fixed", st.beta));
+  for (const auto& s : r.samples) {
+    const auto& f = s.outcome.fit;
+    if (!f) {
+      std::cout << fmt::format("    {}: no fit: {}\n", s.sample, s.outcome.why_not);
+      continue;
+    }
+    std::string exponents;
+    if (st.fit_alpha) exponents += ", alpha = " + with_error(f->alpha, "{:.3g}");
+    if (st.fit_beta) exponents += ", beta = " + with_error(f->beta, "{:.3g}");
+    std::cout << fmt::format(
+        "    {}: phi_0 = {}, phi_m = {}, sigma* = {}, A = {}{}, chi2/dof = {:.3g}; DST from phi "
+        "{}, shear jamming from phi_m\n",
+        s.sample, with_error(f->phi_0, "{:.4f}"), with_error(f->phi_m, "{:.4f}"),
+        with_error(f->sigma_star, "{:.4g}"), with_error(f->A, "{:.4g}"), exponents,
+        f->chi2_per_dof(), with_error({s.onset.phi, s.onset_phi_err}, "{:.4f}"));
+  }
+}
+
+// Why the fit was asked for and none came out: every sample's reason, in one line.
+std::string no_fit_reason(const analysis::WyartCatesReport& r) {
+  std::string why;
+  for (const auto& s : r.samples)
+    why += fmt::format("{}{}: {}", why.empty() ? "" : "; ", s.sample, s.outcome.why_not);
+  return "--model wyart-cates: no sample could be fitted (" + why + ")";
+}
+
 }  // namespace
 
 int execute_analyze_command(const AnalyzeCommandArgs& args) {
@@ -121,9 +180,21 @@ int execute_analyze_command(const AnalyzeCommandArgs& args) {
   const std::filesystem::path out = args.out.empty()
                                         ? std::filesystem::path("out") / "analysis" / input.stem()
                                         : std::filesystem::path(args.out);
-  const analysis::AnalysisReport report =
-      analysis::analyse(analysis::load_analysis_input(input), args.settings);
+  analysis::AnalysisInput data = analysis::load_analysis_input(input);
+  // The model is fitted before anything is written: a fit that was asked for
+  // and is impossible is bad input, and leaves no half-finished folder.
+  std::optional<analysis::WyartCatesReport> model;
+  if (!args.model.empty()) {
+    check_model_settings(args.wyart_cates);
+    model = analysis::wyart_cates_report(data, args.wyart_cates);
+    if (!model->any_fit()) throw InputError(no_fit_reason(*model));
+  }
+  const analysis::AnalysisReport report = analysis::analyse(std::move(data), args.settings);
   analysis::write_report_files(report, out);
+  if (model)
+    analysis::write_wyart_cates_files(*model, out);
+  else
+    analysis::remove_wyart_cates_files(out);
   if (!args.no_plots) {
     const std::string script =
         args.plot_script.empty() ? plot_script("analysis.py") : args.plot_script;
@@ -133,7 +204,10 @@ int execute_analyze_command(const AnalyzeCommandArgs& args) {
           "dilatant: plots skipped ({}); curves.csv, points.csv and fits.json are complete\n",
           failure);
   }
-  if (!args.quiet) print_summary(report, out);
+  if (!args.quiet) {
+    print_summary(report, out);
+    if (model) print_model_summary(*model);
+  }
   return 0;
 }
 

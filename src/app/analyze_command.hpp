@@ -4,10 +4,13 @@
 // analysis (docs/analysis.md) of a manifest of rheometer files or of a sweep's
 // flowcurves.csv. The numbers come from the library (src/analysis); the plots
 // are drawn from the written files by python/dilatant/plots/analysis.py.
+// `--model wyart-cates` adds the Wyart–Cates fit of each sample
+// (analysis/wyart_cates_report.hpp) and its overlay and flow-state map.
 #include <CLI/CLI.hpp>
 #include <string>
 
 #include "analysis/analysis_settings.hpp"
+#include "analysis/wyart_cates_fit.hpp"
 #include "app/python_script.hpp"
 
 namespace dilatant {
@@ -21,6 +24,8 @@ struct AnalyzeCommandArgs {
   std::string python = default_python();
   std::string plot_script;  // empty: plot_script() (app/python_script.hpp)
   analysis::AnalysisSettings settings;
+  std::string model;  // empty, or "wyart-cates"
+  analysis::WyartCatesSettings wyart_cates;
 };
 
 CLI::App* add_analyze_command(CLI::App& app, AnalyzeCommandArgs& args);

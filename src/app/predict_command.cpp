@@ -5,11 +5,13 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "analysis/jamming_table.hpp"
 #include "analysis/onset_table.hpp"
 #include "analysis/phase_diagram.hpp"
 #include "analysis/prediction_report.hpp"
+#include "analysis/wyart_cates_prediction.hpp"
 #include "app/python_script.hpp"
 #include "friction/defaults.hpp"
 #include "io/atomic_file.hpp"
@@ -53,6 +55,23 @@ CLI::App* add_predict_command(CLI::App& app, PredictCommandArgs& args) {
                            "the regime over mu0 0-1 and phi 0.50-0.66: DIR/phase_diagram.csv "
                            "and its plot (PNG, SVG)");
   grid->excludes(mu0)->excludes(phi);
+  auto* model = p->add_option("--model", args.model,
+                              "answer from a Wyart-Cates fit (the wyart_cates.json of `dilatant "
+                              "analyze --model wyart-cates`) instead of the table: the regime at "
+                              "--phi (cst, dst, shear_jamming, no_flow) and, with --stress, the "
+                              "state of the stress-controlled flow there")
+                    ->check(CLI::ExistingFile);
+  model->excludes(grid)->excludes(mu0)->excludes("--table");
+  p->add_option("--sample", args.sample, "--model: the fitted sample (default: the only one)")
+      ->needs(model);
+  p->add_option_function<double>(
+       "--stress",
+       [&args](double v) {
+         args.stress = v;
+         args.stress_given = true;
+       },
+       "--model: the imposed shear stress, in the fit's units (> 0)")
+      ->needs(model);
   p->add_option("-o,--out", args.out, "--grid's output folder (default: out/predict)");
   p->add_flag("--no-plots", args.no_plots, "--grid: write the table only, no plot");
   p->add_option("--python", args.python, "Python with matplotlib that draws the plot")
@@ -81,14 +100,61 @@ int draw_grid(const PredictCommandArgs& args) {
   return 0;
 }
 
+std::string or_none(const nlohmann::ordered_json& v, const char* format) {
+  return v.is_number() ? fmt::format(fmt::runtime(format), v.get<double>()) : std::string("-");
+}
+
+int predict_from_model(const PredictCommandArgs& args) {
+  if (!args.phi_given) throw InputError("predict --model needs --phi");
+  if (!(args.phi > 0.0 && args.phi < 1.0))
+    throw InputError(fmt::format("--phi {}: must be in (0, 1)", args.phi));
+  if (args.stress_given && !(args.stress > 0.0 && std::isfinite(args.stress)))
+    throw InputError(fmt::format("--stress {}: must be a finite number > 0", args.stress));
+  const auto fit = analysis::read_fitted_wyart_cates(args.model, args.sample);
+  const auto j = analysis::wyart_cates_prediction(
+      fit, args.phi, args.stress_given ? std::optional(args.stress) : std::nullopt);
+  if (args.json) {
+    std::cout << j.dump(2) << "\n";
+    return 0;
+  }
+  std::cout << fmt::format(
+      "{} (phi {} against phi_DST = {} +- {}, phi_m = {} +- {}, phi_0 = {} +- {}{}; source: "
+      "Wyart-Cates fit {}, sample {})\n",
+      j["regime"].get<std::string>(), args.phi, or_none(j["phi_dst"], "{:.4f}"),
+      or_none(j["phi_dst_err"], "{:.2g}"), or_none(j["phi_m"], "{:.4f}"),
+      or_none(j["phi_m_err"], "{:.2g}"), or_none(j["phi_0"], "{:.4f}"),
+      or_none(j["phi_0_err"], "{:.2g}"),
+      j["uncertain"].get<bool>() ? fmt::format("; within {:.1f} sigma of a boundary: uncertain",
+                                               j["margin_sigma"].get<double>())
+                                 : "",
+      fit.file, fit.sample);
+  if (j["turning_range"].is_array())
+    std::cout << fmt::format(
+        "the stress-controlled flow curve turns back (DST) between sigma {:.4g} "
+        "and {:.4g}\n",
+        j["turning_range"][0].get<double>(), j["turning_range"][1].get<double>());
+  if (j["shear_jamming_stress"].is_number())
+    std::cout << fmt::format("shear jamming above sigma {:.4g}\n",
+                             j["shear_jamming_stress"].get<double>());
+  if (args.stress_given)
+    std::cout << fmt::format("at sigma {}: {} (eta {}, gamma_dot {}, f {:.3g}, phi_J {:.4f})\n",
+                             args.stress, j["state"].get<std::string>(),
+                             or_none(j["viscosity"], "{:.4g}"), or_none(j["shear_rate"], "{:.4g}"),
+                             j["frictional_fraction"].get<double>(), j["phi_j"].get<double>());
+  return 0;
+}
+
 }  // namespace
 
 int execute_predict_command(const PredictCommandArgs& args) {
+  if (!args.model.empty()) return predict_from_model(args);
   if (!(args.s_c > 0.0) || !std::isfinite(args.s_c))
     throw InputError(fmt::format("--s-c {}: must be a finite number > 0", args.s_c));
   if (args.grid) return draw_grid(args);
   if (!args.mu0_given || !args.phi_given)
-    throw InputError("predict needs --mu0 and --phi (or --grid for the whole diagram)");
+    throw InputError(
+        "predict needs --mu0 and --phi (or --grid for the whole diagram, or --model FILE and "
+        "--phi)");
   analysis::check_prediction_input(args.mu0, args.phi, args.s_c);  // before the table is read
   const auto report = analysis::predict(load_table(args.table), args.mu0, args.phi, args.s_c);
   if (args.json) {

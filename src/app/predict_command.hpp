@@ -6,6 +6,9 @@
 // (analysis/onset_table.hpp).
 // `dilatant predict --grid [--out DIR]`: the same over a grid of (mu0, phi),
 // written to DIR/phase_diagram.csv and drawn (python/dilatant/plots/phase_diagram.py).
+// `dilatant predict --model wyart_cates.json --phi Y [--stress S] [--sample NAME]`:
+// the regime from a Wyart–Cates fit of measured or simulated flow curves
+// (analysis/wyart_cates_prediction.hpp) instead of the table.
 #include <CLI/CLI.hpp>
 #include <string>
 
@@ -26,6 +29,10 @@ struct PredictCommandArgs {
   std::string out;  // --grid's folder (default out/predict)
   bool no_plots = false;
   std::string python = default_python();
+  std::string model;   // a wyart_cates.json: answer from the fit
+  std::string sample;  // which of its samples (empty: its only one)
+  double stress = 0.0;
+  bool stress_given = false;
 };
 
 CLI::App* add_predict_command(CLI::App& app, PredictCommandArgs& args);

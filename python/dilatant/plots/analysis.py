@@ -10,7 +10,9 @@ Reads DIR/curves.csv, DIR/points.csv and DIR/fits.json; writes, as PNG and SVG,
   DIR/n_vs_phi.*     n with its confidence interval vs phi, the fit
                      n - 1 = A x^-alpha per sample and phi_max (dashed);
   DIR/collapse.*     n vs the reduced fraction x = (phi_max - phi)/phi_max for all
-                     samples, and n - 1 vs x in log-log with the master curve.
+                     samples, and n - 1 vs x in log-log with the master curve;
+  DIR/wyart_cates.*  when DIR holds a Wyart–Cates fit (--model wyart-cates): the
+                     model over the data and the flow-state map (wyart_cates.py).
 Needs Debian's python3-matplotlib and python3-numpy; exits with status 3 and one
 line on stderr when they are missing (the C++ command then reports the plots as
 skipped). Files are written to NAME.part and renamed, like every result file.
@@ -21,12 +23,14 @@ import sys
 from pathlib import Path
 
 if __package__:
+    from . import wyart_cates
     from .common import RATE, VISCOSITY, read_rows, save
 else:  # run as a script (the CLI: python3 analysis.py DIR); common.py lies beside it,
     # whose folder is not on the path under python3 -P or PYTHONSAFEPATH.
     # Importing it exits 3 without matplotlib.
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     from common import RATE, VISCOSITY, read_rows, save  # noqa: E402
+    import wyart_cates  # noqa: E402
 
 import matplotlib  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
@@ -171,10 +175,13 @@ def collapse(out, samples, curves, fits):
     if xs_all:
         g = np.geomspace(min(xs_all) * 0.7, max(xs_all) * 1.3, 100)
         master = c_fit["A"] * g ** -c_fit["alpha"]
-        text = (f"A = {c_fit['A']:.3g} ± {c_fit['A_err']:.2g}, "
-                f"$\\alpha$ = {c_fit['alpha']:.3g} ± {c_fit['alpha_err']:.2g}\n"
-                f"$\\chi^2$/dof = {c_fit['chi2_per_dof']:.2f}, rms deviation "
-                f"{c_fit['rms_log10_deviation']:.3f} decades")
+        # fits.json writes null for a number that is not finite (a degenerate fit).
+        def shown(key, spec):
+            return "-" if c_fit.get(key) is None else format(c_fit[key], spec)
+        text = (f"A = {shown('A', '.3g')} ± {shown('A_err', '.2g')}, "
+                f"$\\alpha$ = {shown('alpha', '.3g')} ± {shown('alpha_err', '.2g')}\n"
+                f"$\\chi^2$/dof = {shown('chi2_per_dof', '.2f')}, rms deviation "
+                f"{shown('rms_log10_deviation', '.3f')} decades")
         ax_lin.plot(g, 1 + master, "k-", lw=1)
         ax_log.plot(g, master, "k-", lw=1, label="master curve")
         ax_log.text(0.03, 0.04, text, transform=ax_log.transAxes, fontsize=7)
@@ -208,6 +215,8 @@ def draw(out):
     flow_curves(out, samples, curves, points, fits["units"])
     n_vs_phi(out, samples, curves, fits)
     collapse(out, samples, curves, fits)
+    if (out / "wyart_cates.json").exists():
+        wyart_cates.draw(out)
 
 
 def main():

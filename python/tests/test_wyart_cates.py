@@ -1,0 +1,86 @@
+"""The Wyart–Cates fit from Python (dilatant.fit_wyart_cates, and
+dilatant.predict(model=...)): it recovers the parameters of noisy synthetic
+flow curves it did not see, writes the CLI's files, and refuses what it
+cannot fit with the CLI's reason."""
+import json
+import math
+import random
+
+import pytest
+
+import dilatant
+import dilatant.analysis
+from conftest import run_cli
+
+PHI_0, PHI_M, SIGMA_STAR, A = 0.64, 0.56, 2.0, 1.3  # Singh et al. 2018's mu = 1 fractions
+
+
+def viscosity(phi, sigma):
+    """Wyart & Cates (2014), alpha 2, beta 1; None where phi >= phi_J (jammed)."""
+    f = math.exp(-SIGMA_STAR / sigma)
+    phi_j = f * PHI_M + (1 - f) * PHI_0
+    return A * (1 - phi / phi_j) ** -2 if phi < phi_j else None
+
+
+def write_sweep(path, phis, seed=5):
+    """A sweep table as `dilatant sweep` writes it: 5% log-normal noise on the rate."""
+    rng = random.Random(seed)
+    rows = ["phi,mu0,shear_stress,gamma_dot,gamma_dot_err,valid,jammed"]
+    for phi in phis:
+        for k in range(25):
+            sigma = 0.02 * 10 ** (k / 6)
+            eta = viscosity(phi, sigma)
+            if eta is None:
+                rows.append(f"{phi},1,{sigma:.6g},0,,true,true")
+                continue
+            rate = sigma / eta * math.exp(0.05 * rng.gauss(0, 1))
+            rows.append(f"{phi},1,{sigma:.6g},{rate:.6g},{0.05 * rate:.3g},true,false")
+    path.write_text("\n".join(rows) + "\n")
+    return path
+
+
+def test_the_fit_recovers_the_parameters_and_writes_the_files(tmp_path):
+    table = write_sweep(tmp_path / "flowcurves.csv", [0.45, 0.50, 0.53, 0.55, 0.575])
+    result = dilatant.fit_wyart_cates(table, tmp_path / "out", plots=False)
+    s = result.fit["samples"]["mu0=1"]
+    assert s["fitted"]
+    for key, truth in (("phi_0", PHI_0), ("phi_m", PHI_M), ("sigma_star", SIGMA_STAR), ("A", A)):
+        assert abs(s[key] - truth) < 4 * s[key + "_err"], key
+    assert s["phi_0_err"] < 0.003 and s["phi_m_err"] < 0.001  # bounded, not just consistent
+    assert s["alpha_source"] == "fixed" and s["alpha_err"] is None
+    assert PHI_M - 0.03 < s["dst"]["phi_dst"] < PHI_M
+    assert set(result.curves["kind"]) == {"data", "model"}
+    assert set(result.map["regime"]) >= {"cst", "dst", "shear_jamming"}
+    assert (tmp_path / "out" / "wyart_cates.json").is_file()
+    assert dilatant.analysis.fit_wyart_cates is dilatant.fit_wyart_cates
+
+    answer = dilatant.predict(phi=0.55, model=result.out / "wyart_cates.json", stress=5.0)
+    assert answer["source"] == "wyart-cates fit"
+    assert (answer["regime"], answer["state"]) == ("dst", "turns_back")
+    assert dilatant.predict(phi=0.60, model=result.out / "wyart_cates.json")["regime"] == \
+        "shear_jamming"
+
+
+def test_free_exponents_and_the_same_numbers_as_the_cli(cli, tmp_path):
+    table = write_sweep(tmp_path / "flowcurves.csv", [0.45, 0.50, 0.53, 0.55, 0.575])
+    py = dilatant.fit_wyart_cates(table, fit_beta=True)
+    assert py.out is None
+    run_cli(cli, "analyze", table, "--out", tmp_path / "cli", "--model", "wyart-cates",
+            "--fit-beta", "-q", "--no-plots")
+    cli_fit = json.loads((tmp_path / "cli" / "wyart_cates.json").read_text())
+    a, b = py.fit["samples"]["mu0=1"], cli_fit["samples"]["mu0=1"]
+    assert a["beta_source"] == "fitted" and abs(a["beta"] - 1) < 4 * a["beta_err"]
+    for key in ("phi_0", "phi_m", "sigma_star", "A", "beta", "chi2_per_dof"):
+        assert a[key] == b[key], key
+
+
+def test_what_cannot_be_fitted_raises_the_reason(tmp_path):
+    one_phi = write_sweep(tmp_path / "flowcurves.csv", [0.53])
+    with pytest.raises(dilatant.ConfigError, match="2 or more phi"):
+        dilatant.fit_wyart_cates(one_phi)
+    with pytest.raises(dilatant.ConfigError, match="alpha = -1"):
+        dilatant.fit_wyart_cates(one_phi, alpha=-1)
+    with pytest.raises(TypeError, match="need model"):
+        dilatant.predict(mu0=0.4, phi=0.55, stress=2.0)
+    with pytest.raises(dilatant.ConfigError, match="not a Wyart-Cates fit"):
+        dilatant.predict(phi=0.5, model=one_phi)

@@ -1,0 +1,85 @@
+#pragma once
+// The Wyart–Cates model (wyart_cates_model.hpp) fitted to the flow curves of
+// one sample at several phi: phi_0, phi_m, sigma* and A, and optionally the
+// exponents alpha and beta (fixed at 2 and 1 by default, the values of Wyart &
+// Cates, PRL 112, 098302, 2014, and Singh, Mari, Denn & Morris, J. Rheol. 62,
+// 457, 2018).
+//
+// What is fitted: ln eta of every valid, flowing point (a jammed point has no
+// viscosity; a point outside the simulation model's validity is drawn, never
+// fitted), by weighted nonlinear least squares (levenberg_marquardt.hpp):
+//
+//     r_i = (ln eta_i - ln eta_WC(sigma_i, phi_i)) / s_i.
+//
+// In logarithms because the viscosity spans decades and its scatter is
+// relative. s_i is the relative error of the shear rate (= that of eta under an
+// imposed stress) when every point has one (a sweep's gamma_dot_err; at least
+// noise_floor), and the covariance is then scaled by chi2/dof when the scatter
+// exceeds the error bars (never down). Rheometer exports carry no errors: s_i =
+// 1, and the covariance is scaled by chi2/dof, i.e. the scatter of ln eta is
+// measured from the residuals. Parameters: phi_0, phi_m, ln sigma*, ln A
+// (positive), alpha, beta; sigma*_err = sigma* se(ln sigma*), likewise A.
+//
+// Start: a grid over (sigma* across the measured stresses, phi_0 above the
+// largest phi, phi_m), with ln A the weighted mean it must be at each node;
+// the best node starts the descent. A step that puts a measured point at or
+// beyond phi_J (an infinite model viscosity) is refused.
+//
+// Not fitted (why_not): fewer than 2 phi (phi_0 and A are told apart only by
+// how the viscosity grows with phi), no more points than parameters, or a
+// fitted sigma* outside the measured stresses (the curves do not cross the
+// onset of frictional contacts, so sigma* and phi_m are not determined).
+#include <Eigen/Dense>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/divergence_fit.hpp"
+#include "analysis/flow_curve.hpp"
+#include "analysis/wyart_cates_model.hpp"
+
+namespace dilatant::analysis {
+
+struct WyartCatesSettings {
+  double alpha = 2.0;  // the held value, or the start of the fit
+  double beta = 1.0;
+  bool fit_alpha = false;
+  bool fit_beta = false;
+  // Relative error below which no point is trusted (as AnalysisSettings::noise_floor).
+  double noise_floor = 0.005;
+};
+
+struct WyartCatesFit {
+  Estimate phi_0, phi_m, sigma_star, A, alpha, beta;  // err NaN when held fixed
+  double chi2 = 0.0;
+  std::size_t points = 0;
+  std::size_t parameters = 0;
+  std::size_t curves = 0;   // flow curves with fitted points
+  std::vector<double> phi;  // their volume fractions, ascending
+  double stress_low = 0.0;  // the fitted points' stress range
+  double stress_high = 0.0;
+  bool weighted = false;             // s_i from the rate errors; else 1
+  double rms_log10_deviation = 0.0;  // of eta from the model, in decades
+  // The covariance of the fitted parameters, in the order of `names` (of
+  // phi_0, phi_m, ln_sigma_star, ln_A, alpha, beta: those fitted), as scaled
+  // for the errors above; for the errors of what the fit implies (phi_DST).
+  std::vector<std::string> names;
+  Eigen::MatrixXd covariance;
+
+  double chi2_per_dof() const;
+  WyartCatesParameters model() const;
+};
+
+struct WyartCatesOutcome {
+  std::optional<WyartCatesFit> fit;
+  std::string why_not;
+};
+
+// Whether a point enters the fit: valid, flowing, with a positive viscosity.
+bool wyart_cates_fits_point(const FlowPoint& p);
+
+// The curves of one sample (their `sample` names are not read).
+WyartCatesOutcome fit_wyart_cates(const std::vector<FlowCurve>& curves,
+                                  const WyartCatesSettings& settings);
+
+}  // namespace dilatant::analysis
