@@ -48,9 +48,11 @@ constexpr std::array kSummaryAfter = {"phi_bulk"sv,
                                       "frac_steps_unconverged"sv,
                                       "wall_time_s"sv,
                                       "version"sv};
-// Swept keys that place a point along its curve or name the curve's own columns.
+// Swept keys that place a point along its curve or name the curve's own columns:
+// a stress ramp sweeps fluid.lambda (or cell.shear_stress), a rate sweep under
+// cell.control = "rate" sweeps cell.shear_rate; neither names another curve.
 constexpr std::array kCurveKeys = {"cell.phi"sv, "friction.mu0"sv, "fluid.lambda"sv,
-                                   "cell.shear_stress"sv};
+                                   "cell.shear_stress"sv, "cell.shear_rate"sv};
 
 std::string field(std::string text) {
   if (text.find_first_of(",\"\n\r") == std::string::npos) return text;

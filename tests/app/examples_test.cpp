@@ -20,7 +20,7 @@ const fs::path kExamples = fs::path(DILATANT_SOURCE_DIR) / "examples";
 
 // Folders of sweep files; every other .toml is a run configuration, except the
 // analysis manifest, which tests/analysis reads.
-const std::set<std::string> kSweepFolders = {"paper", "sweep"};
+const std::set<std::string> kSweepFolders = {"paper", "sweep", "laws"};
 const std::set<std::string> kSweepFiles = {
     "jamming/shear-jamming.toml", "jamming/shear-jamming-refine.toml", "cluster/scaling.toml"};
 const std::set<std::string> kNotConfigs = {"analysis/manifest.toml"};

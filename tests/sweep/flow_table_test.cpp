@@ -100,6 +100,20 @@ TEST(FlowTable, SummaryInMemoryAndReadBackGiveTheSameRow) {
   EXPECT_NE(from_memory[1].find(",0.30000000000000004,"), std::string::npos) << from_memory[1];
 }
 
+// A rate sweep (cell.control = "rate") places its points along the curve by
+// cell.shear_rate, as a stress ramp does by lambda: the rate names no curve.
+TEST(FlowTable, ASweptShearRateIsACurvesAxisNotItsSample) {
+  const SweepPlan plan = parse_sweep(
+      "[cell]\nsize = [6.0, 5.0, 7.0]\nphi = 0.55\nboundary = \"lees-edwards\"\n"
+      "control = \"rate\"\nshear_rate = [0.01, 0.1]\n[friction]\nmu0 = [0.1, 0.4]\n",
+      "s.toml", ".", {});
+  ASSERT_EQ(plan.points.size(), 4u);
+  // The key written first varies slowest: rate 0.01 with mu0 0.1, 0.4, then 0.1.
+  EXPECT_EQ(sample_label(plan, plan.points[0]), "mu0=0.1");
+  EXPECT_EQ(sample_label(plan, plan.points[1]), "mu0=0.4");
+  EXPECT_EQ(sample_label(plan, plan.points[2]), "mu0=0.1");
+}
+
 TEST(FlowTable, AnalyzeReadsDoneRowsOnlyAndGroupsCurvesByPhiAndSample) {
   test::TempDir dir;
   const SweepPlan plan =
