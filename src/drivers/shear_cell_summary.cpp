@@ -18,7 +18,9 @@ namespace dilatant {
 
 double bulk_fraction(const ShearCellState& s) {
   const BulkRegion region = s.drive->bulk_region(s.world);
-  return region.whole_box ? s.geometry.phi_box
+  // Without walls the box's fraction, exactly; its height H may have moved
+  // from the height it was built with (pressure control): phi_box H0 / H.
+  return region.whole_box ? s.geometry.phi_box * s.geometry.gap_height / s.world.box.length[2]
                           : slab_volume_fraction(s.world, region.z_lo, region.z_hi);
 }
 
@@ -42,6 +44,29 @@ void write_critical_load(nlohmann::json& j, const Config& config, const CellUnit
   j["lambda_at_onset_stress"] = value(u.lambda * std::sqrt(over_tau));
 }
 
+// Under pressure control (docs/shear-cell.md "The pressure-imposed cell"): the
+// normal stress imposed, and the box height H the cell ends with and its
+// steady mean. A row keeps the box's phi_bulk = phi_box H0 / H, so each row's
+// H = H0 phi_box / phi_bulk; the mean is over the rows past the transient (code
+// units, R). Null under the other controls (the height is cell.size's).
+void write_box_height(nlohmann::json& j, const Config& config, const CellUnits& u,
+                      const ShearCellState& s, double from) {
+  const CellConfig& cell = *config.cell();
+  const bool pressure = cell.control == ShearControl::Pressure;
+  const double h0_phi = s.geometry.gap_height * s.geometry.phi_box;
+  const auto height = steady_average(s.measurements.rows, from, [&](const FlowRow& r) {
+    return r.phi_bulk > 0.0 ? h0_phi / r.phi_bulk : 0.0;
+  });
+  const auto value = [&](double x) {
+    return pressure ? nlohmann::json(x) : nlohmann::json(nullptr);
+  };
+  j["normal_stress_imposed"] = value(cell.normal_stress / u.stress_unit);
+  j["box_height"] = value(s.world.box.length[2]);
+  const bool averaged = pressure && height.samples > 0;
+  j["box_height_mean"] = averaged ? nlohmann::json(height.mean) : nlohmann::json(nullptr);
+  j["box_height_err"] = averaged ? nlohmann::json(height.error) : nlohmann::json(nullptr);
+}
+
 }  // namespace
 
 nlohmann::json cell_summary(const Config& config, const CellUnits& u, const ShearCellState& s,
@@ -52,7 +77,8 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   const double from = config.run.transient_strain;
   const Drive& drive = *s.drive;
   const bool walls = drive.bounded_by_walls();
-  const bool rate = cell.control == ShearControl::Rate;
+  const bool rate = cell.control != ShearControl::Stress;  // rate or pressure
+  const bool pressure = cell.control == ShearControl::Pressure;
   const CellRecords records = m.records(from,
                                         {.height = cell.size[2],
                                          .shear_stress = cell.shear_stress,
@@ -96,7 +122,8 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   // the wall-only fields are null, and wall_velocity is the images' speed
   // V = gamma_dot Lz.
   j["boundary"] = drive.name();
-  j["control"] = rate ? "rate" : "stress";
+  j["control"] = pressure ? "pressure" : rate ? "rate" : "stress";
+  write_box_height(j, config, u, s, from);
   // cell.phi counts as cell.phi_definition says; both counts are reported
   // (without walls: the box, exactly).
   const bool box = !walls || cell.phi_definition == PhiDefinition::Box;
