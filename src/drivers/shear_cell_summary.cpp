@@ -160,8 +160,15 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   // one too short to tell (null) is not flagged.
   const Drift drift = wall_speed_drift(rows, from);
   const bool jammed = s.jam.jammed;
+  // Under pressure control the wall speed is imposed; the box height (phi_bulk)
+  // is what may still drift.
+  const Drift phi_drift = volume_fraction_drift(rows, from);
+  const bool height_drifting = pressure && !jammed && phi_drift.known && !phi_drift.steady;
+  j["phi_bulk_drift"] = pressure ? nlohmann::json(phi_drift.change) : nlohmann::json(nullptr);
+  j["phi_bulk_drift_err"] = pressure ? nlohmann::json(phi_drift.error) : nlohmann::json(nullptr);
   const bool drifting = !jammed && drift.known && !drift.steady;
-  j["steady"] = jammed || !drift.known ? nlohmann::json(nullptr) : nlohmann::json(drift.steady);
+  j["steady"] = jammed || !drift.known ? nlohmann::json(nullptr)
+                                       : nlohmann::json(drift.steady && !height_drifting);
   j["wall_velocity_drift"] = drift.change;  // second half of the window minus first, relative
   j["wall_velocity_drift_err"] = drift.error;
   // Why a point is not valid, in words a user can act on (the CLI's warning
@@ -182,6 +189,12 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
         "not steady: the wall speed drifted by {:+.0f}% +- {:.0f}% over the averaging window "
         "(run longer, or raise run.transient_strain)",
         100.0 * drift.change, 100.0 * drift.error));
+  if (height_drifting)
+    invalid.push_back(fmt::format(
+        "not steady: phi_bulk (the box height) drifted by {:+.1f}% +- {:.1f}% over the averaging "
+        "window (run longer, raise run.transient_strain, or make the lid heavier: "
+        "cell.boundary_mass)",
+        100.0 * phi_drift.change, 100.0 * phi_drift.error));
   j["valid"] = invalid.empty();
   j["invalid_reasons"] = invalid;
   records.wall_forces.write(j);

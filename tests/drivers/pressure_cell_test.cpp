@@ -92,6 +92,9 @@ TEST_F(PressureCell, PhiAndMuEffAreSteady) {
     const double h0_phi = 9.0 * j["phi_box"].get<double>();
     EXPECT_NEAR(j["box_height_mean"].get<double>() * phi, h0_phi, 0.02 * h0_phi);
     EXPECT_TRUE(j["profile_consistent"].get<bool>());
+    EXPECT_TRUE(j["steady"].get<bool>())
+        << j["phi_bulk_drift"] << " +- " << j["phi_bulk_drift_err"];
+    EXPECT_TRUE(j["valid"].get<bool>()) << j["invalid_reasons"];
   }
 }
 
