@@ -48,9 +48,11 @@ void write_critical_load(nlohmann::json& j, const Config& config, const CellUnit
 // normal stress imposed, and the box height H the cell ends with and its
 // steady mean. A row keeps the box's phi_bulk = phi_box H0 / H, so each row's
 // H = H0 phi_box / phi_bulk; the mean is over the rows past the transient (code
-// units, R). Null under the other controls (the height is cell.size's).
-void write_box_height(nlohmann::json& j, const Config& config, const CellUnits& u,
-                      const ShearCellState& s, double from) {
+// units, R), and so is the fluctuation, the rows' standard deviation of H over
+// its mean, which this returns (0 without rows). Null under the other controls
+// (the height is cell.size's).
+double write_box_height(nlohmann::json& j, const Config& config, const CellUnits& u,
+                        const ShearCellState& s, double from) {
   const CellConfig& cell = *config.cell();
   const bool pressure = cell.control == ShearControl::Pressure;
   const double h0_phi = s.geometry.gap_height * s.geometry.phi_box;
@@ -65,7 +67,21 @@ void write_box_height(nlohmann::json& j, const Config& config, const CellUnits& 
   const bool averaged = pressure && height.samples > 0;
   j["box_height_mean"] = averaged ? nlohmann::json(height.mean) : nlohmann::json(nullptr);
   j["box_height_err"] = averaged ? nlohmann::json(height.error) : nlohmann::json(nullptr);
+  double n = 0.0, sum_sq = 0.0;
+  for (const FlowRow& r : s.measurements.rows) {
+    if (r.strain <= from || !(r.phi_bulk > 0.0)) continue;
+    const double h = h0_phi / r.phi_bulk - height.mean;
+    n += 1.0;
+    sum_sq += h * h;
+  }
+  const double fluctuation = averaged && n > 0.0 ? std::sqrt(sum_sq / n) / height.mean : 0.0;
+  j["box_height_fluctuation"] = averaged ? nlohmann::json(fluctuation) : nlohmann::json(nullptr);
+  return fluctuation;
 }
+
+// The largest standard deviation of the box height, over its mean, of a
+// pressure-controlled point that counts as valid.
+constexpr double kLidFluctuationLimit = 0.05;
 
 }  // namespace
 
@@ -123,7 +139,7 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   // V = gamma_dot Lz.
   j["boundary"] = drive.name();
   j["control"] = pressure ? "pressure" : rate ? "rate" : "stress";
-  write_box_height(j, config, u, s, from);
+  const double height_fluctuation = write_box_height(j, config, u, s, from);
   // cell.phi counts as cell.phi_definition says; both counts are reported
   // (without walls: the box, exactly).
   const bool box = !walls || cell.phi_definition == PhiDefinition::Box;
@@ -189,6 +205,13 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
         "not steady: the wall speed drifted by {:+.0f}% +- {:.0f}% over the averaging window "
         "(run longer, or raise run.transient_strain)",
         100.0 * drift.change, 100.0 * drift.error));
+  // A lid too light for the flow bounces (docs/shear-cell.md "Films and
+  // drag"): its height swings far about a mean that may look steady.
+  if (pressure && height_fluctuation > kLidFluctuationLimit)
+    invalid.push_back(fmt::format(
+        "the box height fluctuates by {:.0f}% of its mean (at most {:.0f}%): the lid bounces; "
+        "make it heavier (cell.boundary_mass)",
+        100.0 * height_fluctuation, 100.0 * kLidFluctuationLimit));
   if (height_drifting)
     invalid.push_back(fmt::format(
         "not steady: phi_bulk (the box height) drifted by {:+.1f}% +- {:.1f}% over the averaging "
