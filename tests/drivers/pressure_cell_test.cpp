@@ -10,7 +10,8 @@
 // inertial number I = gamma_dot R sqrt(rho_p / P), and phi(I) decreases with
 // I, so the denser packing is the one under the higher pressure.
 //
-// PressureCell (its own ctest entry): both runs in one process.
+// PressureCell (its own ctest entry with PressureCellFilms): both dry runs in
+// one process.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -118,6 +119,37 @@ TEST_F(PressureCell, MuEffRisesWithTheInertialNumber) {
       std::hypot(low_["mu_eff_err"].get<double>(), high_["mu_eff_err"].get<double>());
   EXPECT_GT(lo - hi, 3.0 * err) << "mu_eff(P = " << kLowP << ") = " << lo
                                 << ", mu_eff(P = " << kHighP << ") = " << hi << " +- " << err;
+}
+
+// Films and drag (examples/pressure-cell.toml: Stribeck friction, squeeze
+// films, Stokes drag, eta_f = 10): the viscous regime, J = eta_f gamma_dot / P
+// = 0.02 at a Stokes number I^2 / J = 2e-4. The lid (heavy enough not to
+// bounce: docs/shear-cell.md "Films and drag") holds the measured -sigma_zz
+// at P, and the point is steady and valid. One run, about 7 s.
+TEST(PressureCellFilms, HoldsThePressureInTheViscousRegime) {
+  const nlohmann::json j = test::run_cell_summary(
+      "pressure_films",
+      {"cell.boundary=\"lees-edwards\"", "cell.control=\"pressure\"", "cell.size=[8.0, 5.0, 9.0]",
+       "cell.phi=0.51", "cell.shear_rate=0.002", "cell.normal_stress=1.0", "cell.boundary_mass=1e4",
+       "friction.law=\"stribeck\"", "friction.mu0=0.4", "fluid.lambda=0.1",
+       "fluid.lubrication=\"normal\"", "fluid.drag=\"stokes\"", "run.strain=4.0",
+       "run.transient_strain=1.5", "run.output_interval=0.02", "run.snapshot_interval=0.0"});
+  EXPECT_FALSE(j["jammed"].get<bool>());
+  const double p = j["normal_stress_imposed"], measured = j["normal_stress"];
+  const double err = j["normal_stress_err"];
+  ASSERT_GT(err, 0.0);
+  ASSERT_LT(err, 0.05 * p);
+  EXPECT_NEAR(measured, p, 3.0 * err);
+  // J of the imposed rate and the measured pressure: 10 x 0.002 / 1.
+  EXPECT_NEAR(j["viscous_number"].get<double>(), 0.02, 3.0 * 0.02 * err / p);
+  EXPECT_LT(j["box_height_fluctuation"].get<double>(), 0.05);
+  EXPECT_TRUE(j["steady"].get<bool>()) << j["phi_bulk_drift"] << " +- " << j["phi_bulk_drift_err"];
+  EXPECT_TRUE(j["valid"].get<bool>()) << j["invalid_reasons"];
+  const double phi = j["phi_bulk"], mu = j["mu_eff"];
+  EXPECT_GT(phi, 0.5);
+  EXPECT_LT(phi, 0.64);
+  EXPECT_GT(mu, 0.1);
+  EXPECT_LT(mu, 1.5);
 }
 
 }  // namespace
