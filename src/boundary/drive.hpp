@@ -19,7 +19,8 @@
 //   WallDrive   (wall_drive.hpp)   rough walls, the top one pulled by a constant
 //                                  force: stress control (the paper's cell);
 //   ImageDrive  (image_drive.hpp)  Lees–Edwards images, no walls: stress or
-//                                  rate control.
+//                                  rate control, or rate and pressure control
+//                                  (the box height follows the normal stress).
 //
 // An abstract class owned through std::unique_ptr rather than a std::variant:
 // the cell calls its drive a few times per step, never inside the contact
@@ -51,11 +52,13 @@ struct DriveRecord;
 enum class DriveKind { Walls, Images };
 struct DriveSpec {
   DriveKind kind = DriveKind::Walls;
-  bool rate_controlled = false;
-  double shear_stress = 0.0;  // tau imposed (stress control), code units
-  double shear_rate = 0.0;    // gamma_dot imposed (rate control)
-  double mass = 0.0;          // the driven mass M; 0: the drive's default
-  Vec3 size = Vec3::Zero();   // Lx, Ly, Lz
+  bool rate_controlled = false;      // also under pressure control
+  bool pressure_controlled = false;  // the box height follows normal_stress
+  double shear_stress = 0.0;         // tau imposed (stress control), code units
+  double shear_rate = 0.0;           // gamma_dot imposed (rate or pressure control)
+  double normal_stress = 0.0;        // P = -sigma_zz imposed (pressure control)
+  double mass = 0.0;                 // the driven mass M; 0: the drive's default
+  Vec3 size = Vec3::Zero();          // Lx, Ly, Lz
 };
 
 // Where the cell measures its bulk. With walls: the central half of the gap,
@@ -67,6 +70,14 @@ struct BulkRegion {
   double z_lo = 0.0, z_hi = 0.0;        // phi_bulk and the bulk shear rate
   double flow_lo = 0.0, flow_hi = 0.0;  // where the velocity profile should be linear
   bool whole_box = false;
+};
+
+// The particle stress of a step (measure/particle_stress.hpp), the parts a
+// drive responds to: sigma_zx across the shear planes, sigma_zz normal to them
+// (tensile positive: a compressed packing has sigma_zz < 0).
+struct StepStress {
+  double sigma_zx = 0.0;
+  double sigma_zz = 0.0;
 };
 
 class Drive {
@@ -96,7 +107,7 @@ class Drive {
   // times dt.
   virtual double fed_work(const World& world, double sigma_zx, double dt) const = 0;
   // After that step: the drive's response to the measured stress, for the next.
-  virtual void respond(World& world, double sigma_zx, double dt) = 0;
+  virtual void respond(World& world, const StepStress& stress, double dt) = 0;
 
   // ---- its motion ----
   // V: the top wall's speed, or the images' above the box.

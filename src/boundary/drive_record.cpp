@@ -8,7 +8,8 @@ const char* DriveRecord::fault(const PeriodicBox& box, std::size_t bodies) const
   if (!owners.empty() && owners.size() != bodies) return "body groups";
   for (const std::int32_t i : wall.spheres)
     if (i < 0 || static_cast<std::size_t>(i) >= bodies) return "wall sphere index";
-  const bool mass_missing = box.lees_edwards ? !images.rate_controlled && !(images.mass > 0.0)
+  const bool needs_mass = !images.rate_controlled || images.pressure_controlled;
+  const bool mass_missing = box.lees_edwards ? needs_mass && !(images.mass > 0.0)
                                              : !wall.spheres.empty() && !(wall.mass > 0.0);
   return mass_missing ? "boundary mass" : nullptr;
 }

@@ -14,6 +14,8 @@ ImageControl ImageDrive::control_for(const DriveSpec& spec, double mass) {
   c.rate = spec.rate_controlled ? spec.shear_rate : 0.0;
   c.drive_force = spec.shear_stress * c.area;
   c.mass = mass;
+  c.pressure_controlled = spec.pressure_controlled;
+  c.normal_force = spec.pressure_controlled ? spec.normal_stress * c.area : 0.0;
   return c;
 }
 
@@ -28,11 +30,36 @@ double ImageDrive::time_step_bound(const World& world, double reach, double span
   const double fraction = std::min(1.0, span / world.box.length[2]);
   const double a = control_.rate_controlled ? 0.0 : control_.drive_force / control_.mass;
   if (a > 0.0) return std::sqrt(2.0 * reach / (a * fraction));
-  return reach / (std::abs(world.box.shear_velocity) * fraction);
+  const double by_speed = reach / (std::abs(world.box.shear_velocity) * fraction);
+  if (!control_.pressure_controlled) return by_speed;
+  // The height, as the boundary under stress control: the lid (the top of the
+  // box) accelerates at no more than P A / M from rest, or moves at W; a body
+  // `span` above another moves the fraction span / Lz of that relative to it.
+  const double a_h = control_.normal_force / control_.mass;
+  const double by_push = std::sqrt(2.0 * reach / (a_h * fraction));
+  const double w = std::abs(control_.height_speed);
+  const double by_height = w > 0.0 ? reach / (w * fraction) : by_push;
+  return std::min({by_speed, by_push, by_height});
 }
 
-void ImageDrive::respond(World& world, double sigma_zx, double dt) {
+void ImageDrive::dilate(World& world, double s) const {
+  for (Vec3& x : world.bodies.position) x[2] *= s;
+  world.box.length[2] *= s;
+  if (control_.rate_controlled) world.box.shear_velocity = control_.rate * world.box.length[2];
+}
+
+void ImageDrive::respond(World& world, const StepStress& stress, double dt) {
   PeriodicBox& box = world.box;
+  if (control_.pressure_controlled) {
+    // M dW/dt = A (p - P), then H -> H + W dt as the dilation s (image_drive.hpp).
+    // A step that would fold the box (s <= 0, only from a state far from the
+    // automatic step's bound) halves it instead: the height stays positive.
+    control_.height_speed +=
+        dt * (-control_.area * stress.sigma_zz - control_.normal_force) / control_.mass;
+    const double h = box.length[2];
+    dilate(world, std::max(0.5, (h + control_.height_speed * dt) / h));
+    return;
+  }
   if (control_.rate_controlled) {
     box.shear_velocity = control_.rate * box.length[2];
     return;
@@ -40,7 +67,8 @@ void ImageDrive::respond(World& world, double sigma_zx, double dt) {
   // M dV/dt = A (tau - sigma_zx), forward Euler over the step just taken
   // (image_drive.hpp): the force tau A drives the boundary, the flow's
   // stress across its plane, sigma_zx A, holds it back.
-  box.shear_velocity += dt * (control_.drive_force - control_.area * sigma_zx) / control_.mass;
+  box.shear_velocity +=
+      dt * (control_.drive_force - control_.area * stress.sigma_zx) / control_.mass;
 }
 
 // The homogeneous shear of the box, centred at Lz/2 so that its momentum is zero.
@@ -55,11 +83,16 @@ BulkRegion ImageDrive::bulk_region(const World& world) const {
 
 // The images keep their offset and speed; the control is the spec's (a
 // rate-controlled continuation imposes its rate from the first step), the mass
-// the spec's if it names one. Lz must match: z is periodic.
+// the spec's if it names one. Lz must match: z is periodic (under pressure
+// control the height is the state's, whatever it is; its speed W is kept when
+// the state was pressure-controlled too).
 bool ImageDrive::adopt(const DriveSpec& spec, World& world) {
-  if (spec.kind != DriveKind::Images || world.box.length[2] != spec.size[2]) return false;
+  if (spec.kind != DriveKind::Images) return false;
+  if (!spec.pressure_controlled && world.box.length[2] != spec.size[2]) return false;
+  const double w = control_.pressure_controlled ? control_.height_speed : 0.0;
   control_ = control_for(spec, spec.mass > 0.0 ? spec.mass : control_.mass);
-  if (control_.rate_controlled) world.box.shear_velocity = control_.rate * spec.size[2];
+  control_.height_speed = spec.pressure_controlled ? w : 0.0;
+  if (control_.rate_controlled) world.box.shear_velocity = control_.rate * world.box.length[2];
   return true;
 }
 

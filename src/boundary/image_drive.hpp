@@ -11,6 +11,32 @@
 //
 // Control:
 //   rate    V = gamma_dot Lz, fixed.
+//   pressure  V = gamma_dot Lz as under rate control, and the box height
+//           H = Lz follows the normal stress P = -sigma_zz imposed (the set-up
+//           of Boyer, Guazzelli & Pouliquen, PRL 107, 188301 (2011): rate and
+//           pressure imposed, phi and tau measured). H is a degree of freedom
+//           of fictitious mass M and speed W, Parrinello & Rahman's barostat
+//           (J. Appl. Phys. 52, 7182 (1981)) restricted to the one length Lz,
+//           as in the pressure-controlled Lees–Edwards shear of da Cruz et al.,
+//           Phys. Rev. E 72, 021309 (2005) and Chialvo, Sun & Sundaresan, PRE
+//           85, 021305 (2012):
+//
+//               M dW/dt = A (p - P),   dH/dt = W,   p = -sigma_zz,
+//
+//           the box a lid of mass M pressed down by P A and pushed up by the
+//           normal stress the flow transmits. Between steps (respond), with p
+//           measured over the step just taken (forward Euler for W, then H):
+//           W += dt A (p - P) / M, s = (H + W dt) / H, every z -> s z (an
+//           affine dilation of the box: positions stay inside [0, sH), images
+//           stay images), H -> s H, and V = gamma_dot H again. Velocities are
+//           not rescaled: the dilation rate W / H is small next to the
+//           fluctuations it would add to (a choice; Parrinello & Rahman scale
+//           the peculiar velocities, which changes nothing at first order in
+//           W dt / H). The explicit step is stable while dt^2 A dp/dH / M
+//           stays below 4 (a harmonic oscillator under forward Euler for the
+//           speed and the updated speed for the position, symplectic Euler);
+//           time_step_bound() keeps the lid's displacement per step below the
+//           reach, as for the boundary under stress control.
 //   stress  V follows the stress the flow transmits, with a fictitious inertia
 //           M: the form of Parrinello & Rahman's coupling of a box degree of
 //           freedom to the stress (J. Appl. Phys. 52, 7182 (1981): a
@@ -49,6 +75,10 @@ struct ImageControl {
   double area = 0.0;         // A = Lx Ly
   double rate = 0.0;         // gamma_dot imposed (rate control), else 0
   bool rate_controlled = false;
+  // Pressure control (rate_controlled too; `mass` is then the height's M).
+  bool pressure_controlled = false;
+  double normal_force = 0.0;  // P A, pushing the box's height down
+  double height_speed = 0.0;  // W = dH/dt
 };
 
 class ImageDrive final : public Drive {
@@ -68,7 +98,7 @@ class ImageDrive final : public Drive {
   double fed_work(const World& world, double sigma_zx, double dt) const override {
     return fed_power(world, sigma_zx) * dt;
   }
-  void respond(World& world, double sigma_zx, double dt) override;
+  void respond(World& world, const StepStress& stress, double dt) override;
 
   double speed(const World& world) const override { return world.box.shear_velocity; }
   ShearFlow mean_flow(const World& world) const override;
@@ -95,6 +125,10 @@ class ImageDrive final : public Drive {
     return control_.area * world.box.shear_velocity * sigma_zx;
   }
   const ImageControl& control() const { return control_; }
+
+  // The affine dilation of the box in z by s > 0 (pressure control): every
+  // body's z -> s z, Lz -> s Lz, and under rate control V = gamma_dot Lz.
+  void dilate(World& world, double s) const;
 
  private:
   ImageControl control_;

@@ -40,7 +40,7 @@ class WallDrive final : public Drive {
   double time_step_bound(const World& world, double reach, double span) const override;
   double fed_work(const World&, double, double) const override { return walls_.drive_work(); }
   // Nothing: the wall answered the contacts within the step (its block).
-  void respond(World&, double, double) override {}
+  void respond(World&, const StepStress&, double) override {}
 
   double speed(const World&) const override { return walls_.top().velocity; }
   ShearFlow mean_flow(const World& world) const override;

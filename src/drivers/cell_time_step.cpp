@@ -58,11 +58,12 @@ TimeStepChoice choose_time_step(const World& world, const Drive& drive,
 
 double reference_stress(const CellConfig& cell, double density, double eta_f,
                         const std::vector<FlowRow>& rows) {
-  if (cell.control != ShearControl::Rate) return cell.shear_stress;
+  if (cell.control == ShearControl::Stress) return cell.shear_stress;
   const double gamma_dot = cell.shear_rate, diameter = 2.0 * cell.radius_max;
   const double bagnold = density * diameter * diameter * gamma_dot * gamma_dot;
   const double measured = rows.empty() ? 0.0 : std::abs(invariants(rows.back().stress).shear);
-  return std::max({measured, bagnold, eta_f * gamma_dot});
+  // Under pressure control the normal stress imposed is a stress of the flow too.
+  return std::max({measured, bagnold, eta_f * gamma_dot, cell.normal_stress});
 }
 
 }  // namespace dilatant

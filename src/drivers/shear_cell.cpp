@@ -153,23 +153,33 @@ const StepReport& ShearCell::step() {
   ++s.steps;
   // The speed the strain advances with: the wall's at the step's end, or the
   // images' of the step (constant within it; respond() changes it below).
-  const double velocity = s.drive_speed();
-  s.strain += velocity * s.dt / config_.cell()->size[2];
+  // Under pressure control the box height H varies: the cell measures in the
+  // height it was built with, H0 (docs/shear-cell.md "The pressure-imposed
+  // cell"), the images' speed as V H0 / H (= gamma_dot H0, so that the strain,
+  // the rows' shear rate V / H0 and the summary's are gamma_dot's), the
+  // stress over the box's current volume.
+  const double height = s.world.box.lees_edwards ? s.geometry.gap_height : config_.cell()->size[2];
+  const double velocity =
+      s.world.box.lees_edwards ? s.drive_speed() * height / s.world.box.length[2] : s.drive_speed();
+  s.strain += velocity * s.dt / height;
+  if (s.world.box.lees_edwards)
+    measurement_settings_.volume =
+        s.world.box.length[0] * s.world.box.length[1] * s.world.box.length[2];
 
   const auto measure_start = std::chrono::steady_clock::now();
-  const double sigma_zx = s.measurements.accumulate({.world = s.world,
-                                                     .drive = *s.drive,
-                                                     .contacts = stepper_.contacts(),
-                                                     .report = last_,
-                                                     .dt = s.dt,
-                                                     .velocity = velocity,
-                                                     .strain = s.strain,
-                                                     .step = s.steps},
-                                                    measurement_settings_);
-  const double fed = s.drive->fed_work(s.world, sigma_zx, s.dt);
+  const StepStress stress = s.measurements.accumulate({.world = s.world,
+                                                       .drive = *s.drive,
+                                                       .contacts = stepper_.contacts(),
+                                                       .report = last_,
+                                                       .dt = s.dt,
+                                                       .velocity = velocity,
+                                                       .strain = s.strain,
+                                                       .step = s.steps},
+                                                      measurement_settings_);
+  const double fed = s.drive->fed_work(s.world, stress.sigma_zx, s.dt);
   // The drive's answer to the step's stress (under the images' stress control:
-  // the next step's speed).
-  s.drive->respond(s.world, sigma_zx, s.dt);
+  // the next step's speed; under pressure control: the box's height).
+  s.drive->respond(s.world, stress, s.dt);
   s.measurements.end_step(fed, total_kinetic_energy());
   if (s.schedules.rows.due(s.strain)) {
     close_row();

@@ -150,9 +150,11 @@ DriveSpec drive_spec(const Config& config) {
   const CellConfig& cell = *config.cell();
   const bool images = cell.boundary == CellBoundary::LeesEdwards;
   return {.kind = images ? DriveKind::Images : DriveKind::Walls,
-          .rate_controlled = cell.control == ShearControl::Rate,
+          .rate_controlled = cell.control != ShearControl::Stress,
+          .pressure_controlled = cell.control == ShearControl::Pressure,
           .shear_stress = cell.shear_stress,
           .shear_rate = cell.shear_rate,
+          .normal_stress = cell.normal_stress,
           .mass = images ? cell.boundary_mass : cell.wall_mass,
           .size = cell.size};
 }
@@ -202,7 +204,7 @@ World build_lees_edwards_cell(const Config& config, ShearCellGeometry& geometry,
   geometry.gap_height = lz;
   geometry.wall_radius_mean = 0.0;
 
-  const bool rate = cell.control == ShearControl::Rate;
+  const bool rate = cell.control != ShearControl::Stress;  // rate or pressure
   control = ImageDrive::control_for(
       drive_spec(config), cell.boundary_mass > 0.0 ? cell.boundary_mass : top_wall_mass(config));
   // Start on the homogeneous profile, centred so that the box's momentum is

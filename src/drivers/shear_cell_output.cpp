@@ -82,7 +82,7 @@ std::string ShearCell::progress_line(double elapsed) const {
                         100.0 * d.error);
   }
   // The stress: applied, or under rate control the last row's measured one.
-  const bool rate = config_.cell()->control == ShearControl::Rate;
+  const bool rate = config_.cell()->control != ShearControl::Stress;
   const double tau = !rate          ? config_.cell()->shear_stress
                      : rows.empty() ? 0.0
                                     : invariants(rows.back().stress).shear;

@@ -16,21 +16,24 @@ namespace dilatant {
 
 namespace {
 
-// "DILATNT8": the file ends with the CRC-32 of every byte before it, 4 bytes
+// "DILATNT9": the file ends with the CRC-32 of every byte before it, 4 bytes
 // in the machine's order (io/checksum.hpp), checked before anything is read
-// (7: rows with where the largest contact residual was; 6: the
+// (9: the Lees–Edwards pressure control's fields after the images' control;
+// format 8, the same without them, still reads, as a state without pressure
+// control; 7: rows with where the largest contact residual was; 6: the
 // Lees–Edwards boundary's drive; 5: rows with the particle
 // stress tensor, the box's Lees–Edwards state; 4: rows with the fluid
 // forces' powers, geometry with phi_box; 3: rows with the contact residual;
 // 2: contact memory with regime)
-constexpr std::uint64_t kMagic = 0x38544e54414c4944ULL;
+constexpr std::uint64_t kMagic = 0x39544e54414c4944ULL;
+constexpr std::uint64_t kMagic8 = 0x38544e54414c4944ULL;
 constexpr std::size_t kChecksumBytes = sizeof(std::uint32_t);
 
 // One function serves both directions so the field order cannot diverge. The
 // drive is written as its record (boundary/drive_record.hpp), whose fields
 // keep their places in the format.
 template <class Archive, class State>
-void visit_state(Archive& a, State& s, DriveRecord& d) {
+void visit_state(Archive& a, State& s, DriveRecord& d, bool format8 = false) {
   auto& b = s.world.bodies;
   a.vector(b.position);
   a.vector(b.velocity);
@@ -63,6 +66,11 @@ void visit_state(Archive& a, State& s, DriveRecord& d) {
   a.value(d.images.area);
   a.value(d.images.rate);
   a.value(d.images.rate_controlled);
+  if (!format8) {
+    a.value(d.images.pressure_controlled);
+    a.value(d.images.normal_force);
+    a.value(d.images.height_speed);
+  }
   a.value(s.geometry);
   a.value(s.dt);
   a.value(s.steps);
@@ -183,19 +191,21 @@ ShearCellState read_checkpoint(std::string bytes, const std::filesystem::path& f
   if (bytes.size() < sizeof(magic)) throw std::runtime_error("checkpoint is truncated");
   std::memcpy(&magic, bytes.data(), sizeof(magic));
   constexpr std::uint64_t kFormatMask = 0x00ffffffffffffffULL;
-  if (magic != kMagic && (magic & kFormatMask) == (kMagic & kFormatMask))
+  const bool format8 = magic == kMagic8;
+  if (magic != kMagic && !format8 && (magic & kFormatMask) == (kMagic & kFormatMask))
     throw std::runtime_error(fmt::format(
         "{}: checkpoint of an older dilatant (format {}; this version reads format {}): run "
         "this point anew without --resume",
         file.string(), static_cast<char>(magic >> 56), static_cast<char>(kMagic >> 56)));
-  if (magic != kMagic) throw std::runtime_error(file.string() + ": not a dilatant checkpoint");
+  if (magic != kMagic && !format8)
+    throw std::runtime_error(file.string() + ": not a dilatant checkpoint");
   check_checksum(bytes, file);
   BinaryReader r(std::move(bytes));
   r.end_before(kChecksumBytes);
   r.value(magic);
   ShearCellState s;
   DriveRecord drive;
-  visit_state(r, s, drive);
+  visit_state(r, s, drive, format8);
   std::uint64_t n = 0;
   r.value(n);
   for (std::uint64_t k = 0; k < n; ++k) {

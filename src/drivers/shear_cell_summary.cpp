@@ -18,7 +18,9 @@ namespace dilatant {
 
 double bulk_fraction(const ShearCellState& s) {
   const BulkRegion region = s.drive->bulk_region(s.world);
-  return region.whole_box ? s.geometry.phi_box
+  // Without walls the box's fraction, exactly; its height H may have moved
+  // from the height it was built with (pressure control): phi_box H0 / H.
+  return region.whole_box ? s.geometry.phi_box * s.geometry.gap_height / s.world.box.length[2]
                           : slab_volume_fraction(s.world, region.z_lo, region.z_hi);
 }
 
@@ -42,6 +44,45 @@ void write_critical_load(nlohmann::json& j, const Config& config, const CellUnit
   j["lambda_at_onset_stress"] = value(u.lambda * std::sqrt(over_tau));
 }
 
+// Under pressure control (docs/shear-cell.md "The pressure-imposed cell"): the
+// normal stress imposed, and the box height H the cell ends with and its
+// steady mean. A row keeps the box's phi_bulk = phi_box H0 / H, so each row's
+// H = H0 phi_box / phi_bulk; the mean is over the rows past the transient (code
+// units, R), and so is the fluctuation, the rows' standard deviation of H over
+// its mean, which this returns (0 without rows). Null under the other controls
+// (the height is cell.size's).
+double write_box_height(nlohmann::json& j, const Config& config, const CellUnits& u,
+                        const ShearCellState& s, double from) {
+  const CellConfig& cell = *config.cell();
+  const bool pressure = cell.control == ShearControl::Pressure;
+  const double h0_phi = s.geometry.gap_height * s.geometry.phi_box;
+  const auto height = steady_average(s.measurements.rows, from, [&](const FlowRow& r) {
+    return r.phi_bulk > 0.0 ? h0_phi / r.phi_bulk : 0.0;
+  });
+  const auto value = [&](double x) {
+    return pressure ? nlohmann::json(x) : nlohmann::json(nullptr);
+  };
+  j["normal_stress_imposed"] = value(cell.normal_stress / u.stress_unit);
+  j["box_height"] = value(s.world.box.length[2]);
+  const bool averaged = pressure && height.samples > 0;
+  j["box_height_mean"] = averaged ? nlohmann::json(height.mean) : nlohmann::json(nullptr);
+  j["box_height_err"] = averaged ? nlohmann::json(height.error) : nlohmann::json(nullptr);
+  double n = 0.0, sum_sq = 0.0;
+  for (const FlowRow& r : s.measurements.rows) {
+    if (r.strain <= from || !(r.phi_bulk > 0.0)) continue;
+    const double h = h0_phi / r.phi_bulk - height.mean;
+    n += 1.0;
+    sum_sq += h * h;
+  }
+  const double fluctuation = averaged && n > 0.0 ? std::sqrt(sum_sq / n) / height.mean : 0.0;
+  j["box_height_fluctuation"] = averaged ? nlohmann::json(fluctuation) : nlohmann::json(nullptr);
+  return fluctuation;
+}
+
+// The largest standard deviation of the box height, over its mean, of a
+// pressure-controlled point that counts as valid.
+constexpr double kLidFluctuationLimit = 0.05;
+
 }  // namespace
 
 nlohmann::json cell_summary(const Config& config, const CellUnits& u, const ShearCellState& s,
@@ -52,7 +93,8 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   const double from = config.run.transient_strain;
   const Drive& drive = *s.drive;
   const bool walls = drive.bounded_by_walls();
-  const bool rate = cell.control == ShearControl::Rate;
+  const bool rate = cell.control != ShearControl::Stress;  // rate or pressure
+  const bool pressure = cell.control == ShearControl::Pressure;
   const CellRecords records = m.records(from,
                                         {.height = cell.size[2],
                                          .shear_stress = cell.shear_stress,
@@ -96,7 +138,8 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   // the wall-only fields are null, and wall_velocity is the images' speed
   // V = gamma_dot Lz.
   j["boundary"] = drive.name();
-  j["control"] = rate ? "rate" : "stress";
+  j["control"] = pressure ? "pressure" : rate ? "rate" : "stress";
+  const double height_fluctuation = write_box_height(j, config, u, s, from);
   // cell.phi counts as cell.phi_definition says; both counts are reported
   // (without walls: the box, exactly).
   const bool box = !walls || cell.phi_definition == PhiDefinition::Box;
@@ -133,8 +176,15 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   // one too short to tell (null) is not flagged.
   const Drift drift = wall_speed_drift(rows, from);
   const bool jammed = s.jam.jammed;
+  // Under pressure control the wall speed is imposed; the box height (phi_bulk)
+  // is what may still drift.
+  const Drift phi_drift = volume_fraction_drift(rows, from);
+  const bool height_drifting = pressure && !jammed && phi_drift.known && !phi_drift.steady;
+  j["phi_bulk_drift"] = pressure ? nlohmann::json(phi_drift.change) : nlohmann::json(nullptr);
+  j["phi_bulk_drift_err"] = pressure ? nlohmann::json(phi_drift.error) : nlohmann::json(nullptr);
   const bool drifting = !jammed && drift.known && !drift.steady;
-  j["steady"] = jammed || !drift.known ? nlohmann::json(nullptr) : nlohmann::json(drift.steady);
+  j["steady"] = jammed || !drift.known ? nlohmann::json(nullptr)
+                                       : nlohmann::json(drift.steady && !height_drifting);
   j["wall_velocity_drift"] = drift.change;  // second half of the window minus first, relative
   j["wall_velocity_drift_err"] = drift.error;
   // Why a point is not valid, in words a user can act on (the CLI's warning
@@ -155,6 +205,19 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
         "not steady: the wall speed drifted by {:+.0f}% +- {:.0f}% over the averaging window "
         "(run longer, or raise run.transient_strain)",
         100.0 * drift.change, 100.0 * drift.error));
+  // A lid too light for the flow bounces (docs/shear-cell.md "Films and
+  // drag"): its height swings far about a mean that may look steady.
+  if (pressure && height_fluctuation > kLidFluctuationLimit)
+    invalid.push_back(fmt::format(
+        "the box height fluctuates by {:.0f}% of its mean (at most {:.0f}%): the lid bounces; "
+        "make it heavier (cell.boundary_mass)",
+        100.0 * height_fluctuation, 100.0 * kLidFluctuationLimit));
+  if (height_drifting)
+    invalid.push_back(fmt::format(
+        "not steady: phi_bulk (the box height) drifted by {:+.1f}% +- {:.1f}% over the averaging "
+        "window (run longer, raise run.transient_strain, or make the lid heavier: "
+        "cell.boundary_mass)",
+        100.0 * phi_drift.change, 100.0 * phi_drift.error));
   j["valid"] = invalid.empty();
   j["invalid_reasons"] = invalid;
   records.wall_forces.write(j);

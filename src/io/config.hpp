@@ -42,9 +42,11 @@ enum class PhiDefinition { BetweenWalls, Box };
 // What bounds the shear cell in z (docs/shear-cell.md "The Lees–Edwards cell"):
 // rough walls, or Lees–Edwards images (periodic in z, no walls).
 enum class CellBoundary { Walls, LeesEdwards };
-// What the cell imposes: the shear stress (the boundary's speed follows), or
-// the shear rate (Lees–Edwards only; the stress is measured).
-enum class ShearControl { Stress, Rate };
+// What the cell imposes: the shear stress (the boundary's speed follows), the
+// shear rate (Lees–Edwards only; the stress is measured), or the shear rate
+// and the normal stress (Lees–Edwards only; the box height follows, phi and
+// the shear stress are measured).
+enum class ShearControl { Stress, Rate, Pressure };
 
 struct PlaneConfig {
   Vec3 point = Vec3::Zero();
@@ -73,8 +75,11 @@ struct CellConfig {
   double initial_shear_rate = 0.2;
   CellBoundary boundary = CellBoundary::Walls;
   ShearControl control = ShearControl::Stress;
-  double shear_rate = 0.0;     // imposed under control = rate
-  double boundary_mass = 0.0;  // Lees–Edwards stress control; 0 = a top wall's mass
+  double shear_rate = 0.0;     // imposed under control = rate or pressure
+  double normal_stress = 0.0;  // -sigma_zz imposed under control = pressure
+  // Lees–Edwards stress control: the boundary's; pressure control: the box
+  // height's. 0 = a top wall's mass
+  double boundary_mass = 0.0;
   // A cell estimated to hold more spheres is refused before it is built
   // (io/config_parse.cpp): a mistyped size must not hang the set-up.
   int max_spheres = 1'000'000;

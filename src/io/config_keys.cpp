@@ -79,19 +79,28 @@ std::vector<ConfigKey> make_keys() {
                      "images, periodic in z with no walls (docs/shear-cell.md \"The Lees-Edwards "
                      "cell\"; there cell.phi counts Lx Ly Lz and the wall keys are errors)"));
   k.push_back(choice("cell", "control", Cell, &cell, &CellConfig::control,
-                     {{"stress", ShearControl::Stress}, {"rate", ShearControl::Rate}},
+                     {{"stress", ShearControl::Stress},
+                      {"rate", ShearControl::Rate},
+                      {"pressure", ShearControl::Pressure}},
                      "impose the shear stress cell.shear_stress (the boundary's speed follows), "
                      "or the shear rate cell.shear_rate (needs cell.boundary = \"lees-edwards\"; "
-                     "the stress is measured)"));
+                     "the stress is measured), or the shear rate and the normal stress "
+                     "cell.normal_stress (lees-edwards; the box height follows, docs/shear-cell.md "
+                     "\"The pressure-imposed cell\")"));
   k.push_back(number("cell", "shear_rate", Cell, &cell, &CellConfig::shear_rate, at_least(0.0),
                      "sqrt(tau/rho_p)/R",
-                     "gamma_dot imposed under cell.control = \"rate\" (> 0 there; an error "
-                     "otherwise): the images above move at gamma_dot Lz"));
+                     "gamma_dot imposed under cell.control = \"rate\" or \"pressure\" (> 0 "
+                     "there; an error otherwise): the images above move at gamma_dot Lz"));
+  k.push_back(number("cell", "normal_stress", Cell, &cell, &CellConfig::normal_stress,
+                     at_least(0.0), "tau",
+                     "P = -sigma_zz imposed under cell.control = \"pressure\" (> 0 there; an "
+                     "error otherwise): the box height Lz follows it"));
   k.push_back(number("cell", "boundary_mass", Cell, &cell, &CellConfig::boundary_mass,
                      at_least(0.0, " (0 = automatic)"), "rho_p R^3",
                      "fictitious mass M of the Lees-Edwards boundary under stress control, "
-                     "M dV/dt = Lx Ly (tau - sigma_zx); 0 = the mass the top wall of the wall "
-                     "cell of the same size and seed has"));
+                     "M dV/dt = Lx Ly (tau - sigma_zx), or of the box height under pressure "
+                     "control, M dW/dt = Lx Ly (-sigma_zz - P); 0 = the mass the top wall of the "
+                     "wall cell of the same size and seed has"));
   // [scene]: particles from a CSV file, planes, gravity (validation and teaching).
   k.push_back(ConfigKey{
       "scene", "particles", Scene, "string", "", "a CSV file",

@@ -78,9 +78,10 @@ void check_keys(const Section& s, std::string_view section, RunMode mode) {
 void check_boundary_keys(const Section& s, const CellConfig& cell) {
   const CellConfig defaults;
   const bool le = cell.boundary == CellBoundary::LeesEdwards;
-  const bool rate = cell.control == ShearControl::Rate;
+  const bool pressure = cell.control == ShearControl::Pressure;
+  const bool rate = cell.control == ShearControl::Rate || pressure;
   if (!le) {
-    check(s, "control", std::string("rate"), !rate,
+    check(s, "control", std::string(pressure ? "pressure" : "rate"), !rate,
           "needs cell.boundary = \"lees-edwards\" (the wall cell is stress-controlled)");
     check(s, "boundary_mass", cell.boundary_mass, cell.boundary_mass == defaults.boundary_mass,
           "is the Lees-Edwards boundary's mass: the wall cell's is cell.wall_mass");
@@ -98,12 +99,21 @@ void check_boundary_keys(const Section& s, const CellConfig& cell) {
           fmt::format("Lz must be at least 4 largest radii ({}) on a periodic axis",
                       4.0 * cell.radius_max));
   }
-  if (rate) {
+  if (pressure) {
+    check(s, "shear_rate", cell.shear_rate, cell.shear_rate > 0.0,
+          "must be > 0 under cell.control = \"pressure\"");
+    check(s, "normal_stress", cell.normal_stress, cell.normal_stress > 0.0,
+          "must be > 0 under cell.control = \"pressure\"");
+  } else {
+    check(s, "normal_stress", cell.normal_stress, cell.normal_stress == defaults.normal_stress,
+          "is imposed only under cell.control = \"pressure\"");
+  }
+  if (rate && !pressure) {
     check(s, "shear_rate", cell.shear_rate, cell.shear_rate > 0.0,
           "must be > 0 under cell.control = \"rate\"");
     check(s, "boundary_mass", cell.boundary_mass, cell.boundary_mass == defaults.boundary_mass,
           "means nothing under cell.control = \"rate\" (the boundary's speed is imposed)");
-  } else {
+  } else if (!rate) {
     check(s, "shear_rate", cell.shear_rate, cell.shear_rate == defaults.shear_rate,
           "is imposed only under cell.control = \"rate\" (the stress is cell.shear_stress)");
   }

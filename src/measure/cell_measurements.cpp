@@ -10,7 +10,8 @@
 
 namespace dilatant {
 
-double CellMeasurements::accumulate(const StepSample& step, const MeasurementSettings& settings) {
+StepStress CellMeasurements::accumulate(const StepSample& step,
+                                        const MeasurementSettings& settings) {
   const std::vector<Contact>& contacts = step.contacts;
   const StepReport& report = step.report;
   const Drive& drive = step.drive;
@@ -80,7 +81,7 @@ double CellMeasurements::accumulate(const StepSample& step, const MeasurementSet
   // On the walls, or without them the bulk's (Drive::normal_stress).
   a.normal_stress += drive.normal_stress(step.world, f, sigma[tensor_index(kZ, kZ)]) * dt;
   if (steady) profile.add(step.world, dt);
-  return sigma[tensor_index(kZ, kX)];
+  return {.sigma_zx = sigma[tensor_index(kZ, kX)], .sigma_zz = sigma[tensor_index(kZ, kZ)]};
 }
 
 void CellMeasurements::close_row(double time, double strain, double phi_bulk) {

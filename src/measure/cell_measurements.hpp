@@ -39,7 +39,7 @@ struct StepSample {
 
 // What the cell's configuration fixes for its measurements.
 struct MeasurementSettings {
-  double volume = 0.0;            // Lx Ly Lz: the stress is averaged over it
+  double volume = 0.0;            // Lx Ly Lz: the stress is averaged over it (the box's now)
   double s_lim = 0.0;             // friction.s_lim, for the fraction beyond it
   double transient_strain = 0.0;  // profile and histogram only past it
 };
@@ -65,9 +65,9 @@ class CellMeasurements {
   void begin_step(double kinetic_energy) {
     if (interval.steps == 0.0) interval.kinetic_start = kinetic_energy;
   }
-  // Adds one step; returns its particle shear stress sigma_zx (code units),
-  // to which the drive responds.
-  double accumulate(const StepSample& step, const MeasurementSettings& settings);
+  // Adds one step; returns its particle stresses sigma_zx and sigma_zz (code
+  // units), to which the drive responds.
+  StepStress accumulate(const StepSample& step, const MeasurementSettings& settings);
   // After the drive's response: the work it fed in the step and the total
   // kinetic energy the step ends with.
   void end_step(double drive_work, double kinetic_energy) {

@@ -26,4 +26,10 @@ struct Drift {
 // Drift of the wall speed over the rows with strain > from.
 Drift wall_speed_drift(const std::vector<FlowRow>& rows, double from);
 
+// Drift of phi_bulk, the same test with a floor of 1% of phi instead of 5%
+// (0.006 at phi 0.58, the resolution phi(J) curves are read at): under
+// pressure control the rate is imposed and the box height is what may still
+// move (docs/shear-cell.md "The pressure-imposed cell").
+Drift volume_fraction_drift(const std::vector<FlowRow>& rows, double from);
+
 }  // namespace dilatant

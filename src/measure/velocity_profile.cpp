@@ -9,11 +9,16 @@ namespace dilatant {
 
 void VelocityProfile::add(const World& world, double weight) {
   const Bodies& b = world.bodies;
+  // A Lees–Edwards box whose height follows a pressure (boundary/image_drive.hpp)
+  // is binned in z / Lz, its velocities scaled alike: the profile of the
+  // reduced coordinates z lz / Lz, v_x lz / Lz, whose slope is gamma_dot.
+  const double height = world.box.lees_edwards ? world.box.length[2] : lz_;
+  const double scale = lz_ / height;
   for (std::size_t i = 0; i < b.size(); ++i) {
     if (b.is_driven(i)) continue;
-    const int k = static_cast<int>(b.position[i][2] / lz_ * bins());
+    const int k = static_cast<int>(b.position[i][2] / height * bins());
     if (k < 0 || k >= bins()) continue;
-    sum_vx_[k] += weight * b.velocity[i][0];
+    sum_vx_[k] += weight * b.velocity[i][0] * scale;
     weight_[k] += weight;
   }
 }

@@ -50,13 +50,13 @@ TEST(ImageDrive, FeedsTheStressTimesTheRateTimesTheVolume) {
 TEST(ImageDrive, RespondsToTheMeasuredStress) {
   World w = box_at(0.7);
   ImageDrive stress(ImageDrive::control_for(stress_spec(3.0 / 20.0), 2.0));
-  stress.respond(w, 0.1, 0.01);
+  stress.respond(w, {.sigma_zx = 0.1}, 0.01);
   EXPECT_DOUBLE_EQ(w.box.shear_velocity, 0.7 + 0.01 * (3.0 - 20.0 * 0.1) / 2.0);
   const double v = w.box.shear_velocity;
-  stress.respond(w, 3.0 / 20.0, 0.01);  // the stress the drive applies: no change
+  stress.respond(w, {.sigma_zx = 3.0 / 20.0}, 0.01);  // the stress the drive applies: no change
   EXPECT_DOUBLE_EQ(w.box.shear_velocity, v);
   ImageDrive rate(ImageDrive::control_for(rate_spec(0.25), 0.0));
-  rate.respond(w, 5.0, 0.01);
+  rate.respond(w, {.sigma_zx = 5.0}, 0.01);
   EXPECT_EQ(w.box.shear_velocity, 0.25 * kLz);
 }
 

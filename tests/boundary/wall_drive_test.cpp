@@ -64,7 +64,7 @@ TEST(WallDrive, AloneItsWorkIsItsKineticEnergyGain) {
   for (int n = 0; n < 10; ++n) {
     const double start = c.drive.kinetic_energy();
     stepper.step(c.world, c.drive.contact_block());
-    c.drive.respond(c.world, 0.0, dt);  // nothing: the wall answered within the step
+    c.drive.respond(c.world, {}, dt);  // nothing: the wall answered within the step
     EXPECT_NEAR(c.drive.fed_work(c.world, 0.0, dt), c.drive.kinetic_energy() - start, 1e-13);
   }
   const double force = 0.1 * kLx * kLy, v = 0.4 + 10 * dt * force / 3.0;

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "boundary/image_drive.hpp"
 #include "drivers/shear_cell.hpp"
 
 namespace dilatant::checkpoint_test {
@@ -56,7 +57,7 @@ TEST(Checkpoint, AnOlderFormatIsNamedAsSuch) {
     f.put('6');  // "DILATNT6": the format before rows located their largest contact residual
   }
   EXPECT_NE(message_of(file).find("checkpoint of an older dilatant (format 6; this version reads "
-                                  "format 8)"),
+                                  "format 9)"),
             std::string::npos)
       << message_of(file);
   {
@@ -97,6 +98,49 @@ TEST(Checkpoint, AnyChangedBitIsRefused) {
   std::string resealed = bytes;
   seal_checkpoint(resealed);
   EXPECT_EQ(resealed, bytes);
+  std::filesystem::remove(file);
+}
+
+// Format 9 added the Lees–Edwards pressure control after the images'
+// control; a format-8 file (the committed fuzz seed, written by a short
+// Lees–Edwards run) still reads, as a state without it.
+TEST(Checkpoint, ReadsFormatEightAsAStateWithoutPressureControl) {
+  const auto file = std::filesystem::path(DILATANT_SOURCE_DIR) / "fuzz" / "corpus" / "checkpoint" /
+                    "small-lees-edwards.bin";
+  std::string bytes;
+  {
+    std::ifstream in(file, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  ASSERT_EQ(bytes.substr(0, 8), "DILATNT8");
+  const ShearCellState s = read_checkpoint(bytes, file);
+  EXPECT_TRUE(s.world.box.lees_edwards);
+  const auto* images = dynamic_cast<const ImageDrive*>(s.drive.get());
+  ASSERT_NE(images, nullptr);
+  EXPECT_FALSE(images->control().pressure_controlled);
+  EXPECT_EQ(images->control().height_speed, 0.0);
+}
+
+// A pressure-controlled state comes back with its height and the lid's speed.
+TEST(Checkpoint, KeepsTheHeightUnderPressureControl) {
+  const auto file = std::filesystem::temp_directory_path() /
+                    ("dilatant_checkpoint_pressure_" + std::to_string(::getpid()) + ".bin");
+  ShearCell cell(
+      default_cell_config({"cell.size=[6.0, 5.0, 7.0]", "run.strain=0.01", "run.transient_strain=0",
+                           "cell.boundary=\"lees-edwards\"", "cell.control=\"pressure\"",
+                           "cell.shear_rate=0.1", "cell.normal_stress=3.0"}));
+  for (int n = 0; n < 3; ++n) cell.step();
+  cell.write_checkpoint(file);
+  const ShearCellState s = load_checkpoint(file);
+  const auto& before = dynamic_cast<const ImageDrive&>(*cell.state().drive).control();
+  const auto* images = dynamic_cast<const ImageDrive*>(s.drive.get());
+  ASSERT_NE(images, nullptr);
+  EXPECT_TRUE(images->control().pressure_controlled);
+  EXPECT_NE(before.height_speed, 0.0);
+  EXPECT_EQ(images->control().height_speed, before.height_speed);
+  EXPECT_EQ(images->control().normal_force, 3.0 * 6.0 * 5.0);
+  EXPECT_EQ(s.world.box.length, cell.state().world.box.length);
+  EXPECT_NE(s.world.box.length[2], 7.0);
   std::filesystem::remove(file);
 }
 

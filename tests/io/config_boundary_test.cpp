@@ -43,6 +43,20 @@ TEST(ConfigBoundary, ReadsALeesEdwardsCellUnderEitherControl) {
   EXPECT_EQ(parse_config(resolved_toml(stress), "config.toml", "/x", {}).resolved, stress.resolved);
 }
 
+// Pressure control: the rate and the normal stress imposed, the box height's
+// mass in cell.boundary_mass; the resolved config loads back.
+TEST(ConfigBoundary, ReadsAPressureControlledLeesEdwardsCell) {
+  const Config c =
+      parse("[cell]\nboundary = \"lees-edwards\"\ncontrol = \"pressure\"\n",
+            {"cell.shear_rate=0.05", "cell.normal_stress=2.5", "cell.boundary_mass=7"});
+  EXPECT_EQ(c.cell()->control, ShearControl::Pressure);
+  EXPECT_EQ(c.cell()->shear_rate, 0.05);
+  EXPECT_EQ(c.cell()->normal_stress, 2.5);
+  EXPECT_EQ(c.cell()->boundary_mass, 7.0);
+  EXPECT_EQ(c.resolved["cell"]["control"].value<std::string>(), "pressure");
+  EXPECT_EQ(parse_config(resolved_toml(c), "config.toml", "/x", {}).resolved, c.resolved);
+}
+
 struct BadInput {
   std::string name;
   std::string toml;
@@ -69,7 +83,33 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"UnknownControl",
                  "[cell]\ncontrol = \"strain\"\n",
                  {},
-                 {"cell.control", "must be \"stress\" or \"rate\""}},
+                 {"cell.control", "must be \"stress\", \"rate\" or \"pressure\""}},
+        BadInput{"PressureControlWithWalls",
+                 "[cell]\ncontrol = \"pressure\"\nshear_rate = 0.1\nnormal_stress = 1\n",
+                 {},
+                 {"cell.control", "needs cell.boundary = \"lees-edwards\""}},
+        BadInput{"PressureControlWithoutRate",
+                 "[cell]\nboundary = \"lees-edwards\"\ncontrol = \"pressure\"\nnormal_stress = 1\n",
+                 {},
+                 {"cell.shear_rate = 0", "must be > 0 under cell.control = \"pressure\""}},
+        BadInput{"PressureControlWithoutNormalStress",
+                 "[cell]\nboundary = \"lees-edwards\"\ncontrol = \"pressure\"\nshear_rate = 0.1\n",
+                 {},
+                 {"cell.normal_stress = 0", "must be > 0 under cell.control = \"pressure\""}},
+        BadInput{"NegativeNormalStress",
+                 "[cell]\nboundary = \"lees-edwards\"\ncontrol = \"pressure\"\nshear_rate = "
+                 "0.1\nnormal_stress = -1\n",
+                 {},
+                 {"cell.normal_stress = -1"}},
+        BadInput{"NormalStressUnderRateControl",
+                 "[cell]\nboundary = \"lees-edwards\"\ncontrol = \"rate\"\nshear_rate = "
+                 "0.1\nnormal_stress = 2\n",
+                 {},
+                 {"cell.normal_stress = 2", "only under cell.control = \"pressure\""}},
+        BadInput{"NormalStressUnderStressControl",
+                 "[cell]\nnormal_stress = 2\n",
+                 {},
+                 {"cell.normal_stress = 2", "only under cell.control = \"pressure\""}},
         BadInput{"RateControlWithWalls",
                  "[cell]\ncontrol = \"rate\"\nshear_rate = 0.1\n",
                  {},

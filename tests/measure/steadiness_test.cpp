@@ -67,5 +67,29 @@ TEST(Steadiness, ShortWindowIsUnknown) {
   EXPECT_FALSE(d.known);  // 20 rows after the transient: 10 per half, fewer than 2 x kBlocks
 }
 
+// phi_bulk under pressure control: a box still growing (phi from 0.57 to 0.51
+// over the window) drifts; a steady one with noise does not, nor a drift
+// below the 1% floor.
+TEST(Steadiness, AGrowingBoxIsNotSteady) {
+  const auto rows_of = [](double phi_start, double phi_end, double noise) {
+    std::vector<FlowRow> rows = series(
+        160, [](double) { return 1.0; }, 0.0, 1);
+    std::mt19937 rng(5);
+    std::normal_distribution<double> gauss(0.0, noise);
+    for (FlowRow& r : rows)
+      r.phi_bulk = phi_start + (phi_end - phi_start) * (r.strain - 2.0) / 6.0 + gauss(rng);
+    return rows;
+  };
+  const Drift growing = volume_fraction_drift(rows_of(0.57, 0.51, 0.002), 2.0);
+  ASSERT_TRUE(growing.known);
+  EXPECT_FALSE(growing.steady);
+  EXPECT_LT(growing.change, 0.0);
+  const Drift steady = volume_fraction_drift(rows_of(0.57, 0.57, 0.002), 2.0);
+  ASSERT_TRUE(steady.known);
+  EXPECT_TRUE(steady.steady);
+  EXPECT_TRUE(volume_fraction_drift(rows_of(0.57, 0.566, 0.0), 2.0).steady);  // 0.35%
+  EXPECT_TRUE(wall_speed_drift(rows_of(0.57, 0.51, 0.0), 2.0).steady);  // the speed is constant
+}
+
 }  // namespace
 }  // namespace dilatant::steadiness_test
