@@ -34,7 +34,8 @@ std::vector<FlowCurve> curves(const WyartCatesParameters& p, const std::vector<d
   for (const double phi : phis) {
     // Strings constructed, not assigned: GCC 12 at -O3 reports a false
     // -Wstringop-overflow on assigning a literal here (GCC bug 105329).
-    FlowCurve c{std::string("synthetic"), std::string(), std::string("S"), phi, std::nullopt, {}, 0};
+    FlowCurve c{
+        std::string("synthetic"), std::string(), std::string("S"), phi, std::nullopt, {}, 0};
     for (int k = 0; k <= n; ++k) {
       FlowPoint pt;
       pt.shear_stress = p.sigma_star * low * std::pow(high / low, k / static_cast<double>(n));
