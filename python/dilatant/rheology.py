@@ -1,6 +1,7 @@
 """The rheometer analysis (`dilatant analyze`, docs/analysis.md), the
 Wyart–Cates fit (`dilatant analyze --model wyart-cates`) and the regime
 predictor (`dilatant predict`, docs/jamming.md)."""
+import importlib
 import json
 import os
 import tempfile
@@ -29,6 +30,25 @@ class AnalysisResult:
         return f"<dilatant.AnalysisResult {len(self.curves)} curves, {self.out or 'not kept'}>"
 
 
+def _write_and_read(write, result, plot_module, input, out, plots, settings, skipped):
+    """Runs `write(input, folder, **settings)` (a _core function that writes its
+    tables into folder) into `out`, or into a temporary folder when out is None
+    (then nothing is kept, no plot); draws dilatant.plots.<plot_module> when
+    asked; returns result(folder, keep)."""
+    if out is None:
+        with tempfile.TemporaryDirectory(prefix="dilatant-") as folder:
+            write(Path(input), folder, **settings)
+            return result(folder, keep=False)
+    write(Path(input), os.fspath(out), **settings)
+    if plots:
+        try:
+            importlib.import_module(f".plots.{plot_module}", __package__).draw(out)
+        except ImportError as e:
+            warnings.warn(f"{skipped} ({e}); the tables are complete", RuntimeWarning,
+                          stacklevel=3)
+    return result(out, keep=True)
+
+
 def analyze(input, out=None, *, plots=True, onset_factor=None, dst_n_cap=None,
             min_window_points=None, confidence=None):
     """Analyses a manifest (.toml) or a sweep's flowcurves.csv, as `dilatant
@@ -37,19 +57,8 @@ def analyze(input, out=None, *, plots=True, onset_factor=None, dst_n_cap=None,
     raise ConfigError with the CLI's `file:line: problem`."""
     settings = dict(onset_factor=onset_factor, dst_n_cap=dst_n_cap,
                     min_window_points=min_window_points, confidence=confidence)
-    if out is None:
-        with tempfile.TemporaryDirectory(prefix="dilatant-") as folder:
-            _core.analyse(Path(input), folder, **settings)
-            return AnalysisResult(folder, keep=False)
-    _core.analyse(Path(input), os.fspath(out), **settings)
-    if plots:
-        try:
-            from .plots import analysis as analysis_plots
-            analysis_plots.draw(out)
-        except ImportError as e:
-            warnings.warn(f"plots skipped ({e}); the tables are complete", RuntimeWarning,
-                          stacklevel=2)
-    return AnalysisResult(out, keep=True)
+    return _write_and_read(_core.analyse, AnalysisResult, "analysis", input, out, plots,
+                           settings, "plots skipped")
 
 
 def rheometer_steps(file):
@@ -90,19 +99,8 @@ def fit_wyart_cates(input, out=None, *, alpha=None, beta=None, fit_alpha=False, 
     is kept (and no plot). No sample fitted raises ConfigError with each
     sample's reason."""
     settings = dict(alpha=alpha, beta=beta, fit_alpha=bool(fit_alpha), fit_beta=bool(fit_beta))
-    if out is None:
-        with tempfile.TemporaryDirectory(prefix="dilatant-") as folder:
-            _core.fit_wyart_cates(Path(input), folder, **settings)
-            return WyartCatesResult(folder, keep=False)
-    _core.fit_wyart_cates(Path(input), os.fspath(out), **settings)
-    if plots:
-        try:
-            from .plots import wyart_cates as wyart_cates_plots
-            wyart_cates_plots.draw(out)
-        except ImportError as e:
-            warnings.warn(f"plot skipped ({e}); the tables are complete", RuntimeWarning,
-                          stacklevel=2)
-    return WyartCatesResult(out, keep=True)
+    return _write_and_read(_core.fit_wyart_cates, WyartCatesResult, "wyart_cates", input, out,
+                           plots, settings, "plot skipped")
 
 
 def predict(mu0=None, phi=None, s_c=None, table=None, *, model=None, stress=None, sample=None):

@@ -1,5 +1,6 @@
 #include "friction/critical_load_law.hpp"
 
+#include "friction/coulomb_law.hpp"
 #include "friction/sommerfeld.hpp"
 
 namespace dilatant {
@@ -19,35 +20,16 @@ bool CriticalLoadLaw::frictional(double normal_impulse, double dt, FrictionBranc
 }
 
 TangentialSolution CriticalLoadLaw::solve(const TangentialProblem& p) const {
-  TangentialSolution out;
-  // Rule 1: no load, no friction.
-  if (p.normal_impulse <= 0.0) {
-    out.sliding_speed = p.free_slip;
-    return out;
-  }
-  const auto report_sommerfeld = [&] {
-    out.sommerfeld = sommerfeld_number(
-        sommerfeld_per_speed(eta_f, p.reduced_radius, p.dt, p.normal_impulse), out.sliding_speed);
-  };
+  // Rule 1 (no load, no friction) and rule 3 (from the critical load on,
+  // Coulomb with mu0) are CoulombLaw's.
+  if (p.normal_impulse <= 0.0 || frictional(p.normal_impulse, p.dt, p.branch))
+    return CoulombLaw{mu0, eta_f}.solve(p);
   // Rule 2: below the critical load the contact slides without friction.
-  if (!frictional(p.normal_impulse, p.dt, p.branch)) {
-    out.sliding_speed = p.free_slip;
-    out.regime = Regime::Frictionless;
-    report_sommerfeld();
-    return out;
-  }
-  // Rule 3: Coulomb with mu0 (as CoulombLaw::solve).
-  const double sticking_impulse = p.free_slip / p.compliance;
-  const double cone = mu0 * p.normal_impulse;
-  if (sticking_impulse <= cone) {
-    out.impulse = sticking_impulse;
-    out.regime = Regime::Stick;
-    return out;
-  }
-  out.impulse = cone;
-  out.sliding_speed = p.free_slip - p.compliance * cone;
-  out.regime = Regime::BoundaryLubricated;
-  report_sommerfeld();
+  TangentialSolution out;
+  out.sliding_speed = p.free_slip;
+  out.regime = Regime::Frictionless;
+  out.sommerfeld = sommerfeld_number(
+      sommerfeld_per_speed(eta_f, p.reduced_radius, p.dt, p.normal_impulse), out.sliding_speed);
   return out;
 }
 
