@@ -94,6 +94,23 @@ def curve_row(source, sample, points, sweep):
     return ",".join(row), None
 
 
+ORDER = {"cst": 0, "dst": 1, "jammed": 2}
+
+
+def contradictions(rows):
+    """Pairs of rows of one mu0 where the weaker state (cst < dst < jammed) is
+    at or above the stronger one in phi: the order predict's rule assumes."""
+    fields = [row.split(",") for row in rows]
+    out = []
+    for lo in fields:
+        for hi in fields:
+            if (float(lo[0]) == float(hi[0]) and ORDER[lo[2]] < ORDER[hi[2]]
+                    and float(lo[1]) >= float(hi[1])):
+                out.append(f"{lo[2]} at {lo[1]} ({lo[11]} {lo[12]}) against {hi[2]} at {hi[1]} "
+                           f"({hi[11]} {hi[12]})")
+    return out
+
+
 def rows_of(flow_file):
     with open(flow_file.parent / "sweep.toml", "rb") as f:
         sweep = tomllib.load(f)
@@ -128,11 +145,17 @@ def main(argv):
             r, s = rows_of(flow)
             rows += r
             skipped += s
+    for s in skipped:
+        print(f"left out: {s}", file=sys.stderr)
+    clashes = contradictions([row for _, row in rows])
+    if clashes:
+        # `dilatant predict` refuses such a table (and would then refuse every
+        # query): the measured curves disagree, and a person must decide why.
+        sys.exit("bulk_flow_states: curves contradict each other (a ramp flows at or above a "
+                 "fraction where another of its mu0 jams):\n  " + "\n  ".join(clashes))
     print(HEADER)
     for _, row in sorted(rows, key=lambda item: item[0]):
         print(row)
-    for s in skipped:
-        print(f"left out: {s}", file=sys.stderr)
 
 
 if __name__ == "__main__":
