@@ -47,6 +47,7 @@ PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.onset_table --header \
 # The flow states measured in bulk (Lees–Edwards ramps), which dilatant
 # predict asks before the sediment table (docs/jamming.md "The predictor's
 # sources"; data/jamming/README.md): read from the committed flow curves.
+mkdir -p "$out"
 PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.bulk_flow_states docs/paper-reproduction \
   > data/jamming/bulk_flow_states.csv.part 2> "$out/bulk_flow_states.log"
 mv data/jamming/bulk_flow_states.csv.part data/jamming/bulk_flow_states.csv
