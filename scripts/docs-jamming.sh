@@ -3,7 +3,8 @@
 # examples/jamming/sediment.toml at every mu0 of the list, the shear-jamming
 # sweep examples/jamming/shear-jamming.toml, then the tables and the figure
 # (dilatant.plots.jamming), the tables into data/jamming/ (dilatant
-# predict's) and the phase diagram of `dilatant predict --grid`. Resumable: a
+# predict's, with the bulk flow states of the Lees–Edwards ramps) and the
+# phase diagram of `dilatant predict --grid`. Resumable: a
 # mu0 whose summary.json exists is not run again, the sweep resumes.
 #   scripts/docs-jamming.sh
 # Environment: DILATANT_JAM_OUT (default out/jamming), DILATANT_JAM_DOCS
@@ -43,6 +44,13 @@ PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.onset_table --header \
   docs/paper-reproduction/dense-window/flowcurves.csv \
   "$out/onsets/curves.csv" literal "docs/paper-reproduction/dense-window (binary e2614d7)" \
   > data/jamming/onsets.csv.part && mv data/jamming/onsets.csv.part data/jamming/onsets.csv
+# The flow states measured in bulk (Lees–Edwards ramps), which dilatant
+# predict asks before the sediment table (docs/jamming.md "The predictor's
+# sources"; data/jamming/README.md): read from the committed flow curves.
+mkdir -p "$out"
+PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.bulk_flow_states docs/paper-reproduction \
+  > data/jamming/bulk_flow_states.csv.part 2> "$out/bulk_flow_states.log"
+mv data/jamming/bulk_flow_states.csv.part data/jamming/bulk_flow_states.csv
 # The predictor against every flow curve of docs/paper-reproduction.
 PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.predictor_checks "$bin" "$docs/predictor_checks.csv" \
   docs/paper-reproduction

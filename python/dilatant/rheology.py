@@ -103,11 +103,16 @@ def fit_wyart_cates(input, out=None, *, alpha=None, beta=None, fit_alpha=False, 
                            plots, settings, "plot skipped")
 
 
-def predict(mu0=None, phi=None, s_c=None, table=None, *, model=None, stress=None, sample=None):
+def predict(mu0=None, phi=None, s_c=None, table=None, *, model=None, stress=None, sample=None,
+            bulk_table=None):
     """The flow regime ('cst', 'dst', 'no_flow') of spheres with friction mu0
     at volume fraction phi, with the margins and the onset scale: the dict of
-    `dilatant predict --json`. s_c None: the Stribeck default; table None: the
-    built-in phi_max_BL(mu0).
+    `dilatant predict --json`. The regime comes from the flow states measured
+    in bulk (Lees–Edwards ramps) where they decide, else from the sediment's
+    phi_max_BL(mu0); `source` says which ('bulk flow curves' or 'sediment
+    table') and `source_detail` which row or why. s_c None: the Stribeck
+    default; table None: the built-in phi_max_BL(mu0); bulk_table None: the
+    built-in bulk flow states, 'none': the sediment table alone.
 
     With model (a wyart_cates.json of fit_wyart_cates or `analyze --model
     wyart-cates`): the regime from that fit instead ('cst', 'dst',
@@ -118,21 +123,24 @@ def predict(mu0=None, phi=None, s_c=None, table=None, *, model=None, stress=None
     if phi is None:
         raise TypeError("predict() needs phi")
     if model is not None:
-        if mu0 is not None or table is not None or s_c is not None:
-            raise TypeError("predict(): model= answers from the fit; mu0, s_c and table are "
-                            "the table's")
+        if mu0 is not None or table is not None or s_c is not None or bulk_table is not None:
+            raise TypeError("predict(): model= answers from the fit; mu0, s_c, table and "
+                            "bulk_table are the tables'")
         return _core.predict_from_fit(Path(model), float(phi),
                                       None if stress is None else float(stress), sample or "")
     if stress is not None or sample is not None:
         raise TypeError("predict(): stress and sample need model=")
     if mu0 is None:
         raise TypeError("predict() needs mu0 (or model=)")
-    return _core.predict(float(mu0), float(phi), s_c, None if table is None else Path(table))
+    return _core.predict(float(mu0), float(phi), s_c, None if table is None else Path(table),
+                         None if bulk_table is None else os.fspath(bulk_table))
 
 
-def phase_diagram(out, table=None, plots=True):
-    """`dilatant predict --grid`: out/phase_diagram.csv (and its plot); returns the table."""
-    _core.phase_diagram(os.fspath(out), None if table is None else Path(table))
+def phase_diagram(out, table=None, plots=True, bulk_table=None):
+    """`dilatant predict --grid`: out/phase_diagram.csv (and its plot); returns the table.
+    Its `source` column says which table decided each node ('bulk' or 'sediment')."""
+    _core.phase_diagram(os.fspath(out), None if table is None else Path(table),
+                        None if bulk_table is None else os.fspath(bulk_table))
     if plots:
         try:
             from .plots import phase_diagram as phase_plots

@@ -1,4 +1,5 @@
-// The regime predictor (analysis/prediction_report.hpp, `dilatant predict`)
+// The regime predictor (analysis/prediction_report.hpp, `dilatant predict`,
+// the bulk flow states before the sediment table)
 // and its phase diagram (analysis/phase_diagram.hpp, `predict --grid`), and the
 // answer from a Wyart–Cates fit (`predict --model FILE`).
 #include <fmt/format.h>
@@ -29,23 +30,38 @@ analysis::JammingTable table_of(const std::optional<std::filesystem::path>& file
   return file ? analysis::JammingTable::read(*file) : analysis::JammingTable::builtin();
 }
 
+// As the CLI's --bulk-table: None the built-in table, "none" no bulk source.
+std::optional<analysis::BulkFlowTable> bulk_table_of(const std::optional<std::string>& file) {
+  if (!file) return analysis::BulkFlowTable::builtin();
+  if (*file == "none") return std::nullopt;
+  return analysis::BulkFlowTable::read(*file);
+}
+
+const analysis::BulkFlowTable* bulk_pointer(const std::optional<analysis::BulkFlowTable>& t) {
+  return t ? &*t : nullptr;
+}
+
 // s_c None: the Stribeck law's default (friction/defaults.hpp), as the CLI's.
 py::object predict(double mu0, double phi, std::optional<double> s_c,
-                   const std::optional<std::filesystem::path>& table) {
+                   const std::optional<std::filesystem::path>& table,
+                   const std::optional<std::string>& bulk_table) {
   const double s = s_c.value_or(friction_defaults::kSc);
   const analysis::PredictArgumentNames names{"mu0", "phi", "s_c"};
   analysis::check_prediction_input(mu0, phi, s, names);  // before the table is read
-  const auto report = analysis::predict(table_of(table), mu0, phi, s, names);
+  const auto bulk = bulk_table_of(bulk_table);
+  const auto report = analysis::predict(table_of(table), bulk_pointer(bulk), mu0, phi, s, names);
   const std::string text =
       analysis::prediction_json(report, table ? table->string() : "built-in").dump();
   return py::module_::import("json").attr("loads")(text);
 }
 
 void phase_diagram(const std::filesystem::path& out,
-                   const std::optional<std::filesystem::path>& table) {
+                   const std::optional<std::filesystem::path>& table,
+                   const std::optional<std::string>& bulk_table) {
+  const auto bulk = bulk_table_of(bulk_table);
   prepare_output_folder(out);
   write_file_atomically(out / "phase_diagram.csv",
-                        analysis::phase_diagram_csv(table_of(table), {}));
+                        analysis::phase_diagram_csv(table_of(table), bulk_pointer(bulk), {}));
 }
 
 // The regime from a Wyart–Cates fit (analysis/wyart_cates_prediction.hpp),
@@ -63,10 +79,11 @@ py::object predict_from_fit(const std::filesystem::path& model, double phi,
 }  // namespace
 
 void bind_predict(py::module_& m) {
-  m.def("predict", &predict, py::arg("mu0"), py::arg("phi"), py::arg("s_c"), py::arg("table"));
+  m.def("predict", &predict, py::arg("mu0"), py::arg("phi"), py::arg("s_c"), py::arg("table"),
+        py::arg("bulk_table"));
   m.def("predict_from_fit", &predict_from_fit, py::arg("model"), py::arg("phi"), py::arg("stress"),
         py::arg("sample"));
-  m.def("phase_diagram", &phase_diagram, py::arg("out"), py::arg("table"));
+  m.def("phase_diagram", &phase_diagram, py::arg("out"), py::arg("table"), py::arg("bulk_table"));
 }
 
 }  // namespace dilatant::python

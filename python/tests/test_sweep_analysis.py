@@ -71,6 +71,19 @@ def test_predict_equals_the_cli_json(cli):
     assert dilatant.predict(0.1, 0.7)["regime"] == "no_flow"
 
 
+def test_predict_names_its_source_as_the_cli(cli):
+    """mu0 1 at phi 0.58: the bulk flow curves (Lees–Edwards) answer cst where
+    the sediment table says dst; bulk_table='none' asks the sediment alone."""
+    expected = json.loads(run_cli(cli, "predict", "--mu0", "1", "--phi", "0.58",
+                                  "--json").stdout)
+    answer = dilatant.predict(mu0=1, phi=0.58)
+    assert answer == expected
+    assert (answer["regime"], answer["source"]) == ("cst", "bulk flow curves")
+    assert "lees-edwards-dst/flowcurves.csv" in answer["source_detail"]
+    alone = dilatant.predict(mu0=1, phi=0.58, bulk_table="none")
+    assert (alone["regime"], alone["source"]) == ("dst", "sediment table")
+
+
 def test_phase_diagram_table(cli, tmp_path):
     run_cli(cli, "predict", "--grid", "--out", tmp_path / "cli", "--no-plots")
     table = dilatant.phase_diagram(tmp_path / "py", plots=False)

@@ -16,8 +16,9 @@ std::size_t last_node(double start, double end, double step) {
 
 }  // namespace
 
-std::string phase_diagram_csv(const JammingTable& table, const PhaseGrid& grid) {
-  std::string out = "mu0,phi,regime,phi_max_bl,phi_rcp,margin_sigma,uncertain\n";
+std::string phase_diagram_csv(const JammingTable& table, const BulkFlowTable* bulk,
+                              const PhaseGrid& grid) {
+  std::string out = "mu0,phi,regime,phi_max_bl,phi_rcp,margin_sigma,uncertain,source\n";
   const std::size_t n_mu = last_node(0.0, grid.mu0_max, grid.mu0_step);
   const std::size_t n_phi = last_node(grid.phi_min, grid.phi_max, grid.phi_step);
   for (std::size_t i = 0; i <= n_mu; ++i) {
@@ -25,11 +26,15 @@ std::string phase_diagram_csv(const JammingTable& table, const PhaseGrid& grid) 
     for (std::size_t j = 0; j <= n_phi; ++j) {
       const double phi = grid.phi_min + static_cast<double>(j) * grid.phi_step;
       const Prediction p = predict_regime(table, mu0, phi);
-      out += fmt::format("{:.4g},{:.4g},{},{:.5f},{:.5f},{},{}\n", mu0, phi,
-                         flow_regime_name(p.regime), p.phi_max_bl.value, p.phi_rcp.value,
-                         std::isfinite(p.margin_sigma) ? fmt::format("{:.3g}", p.margin_sigma)
-                                                       : std::string("inf"),
-                         p.uncertain ? "true" : "false");
+      const auto b = bulk ? decide_from_bulk(*bulk, mu0, phi) : BulkDecision{};
+      const std::string margin = b.regime ? std::string()
+                                 : std::isfinite(p.margin_sigma)
+                                     ? fmt::format("{:.3g}", p.margin_sigma)
+                                     : std::string("inf");
+      out += fmt::format("{:.4g},{:.4g},{},{:.5f},{:.5f},{},{},{}\n", mu0, phi,
+                         flow_regime_name(b.regime ? *b.regime : p.regime), p.phi_max_bl.value,
+                         p.phi_rcp.value, margin, !b.regime && p.uncertain ? "true" : "false",
+                         b.regime ? "bulk" : "sediment");
     }
   }
   return out;

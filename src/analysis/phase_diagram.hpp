@@ -1,9 +1,12 @@
 #pragma once
 // The paper's phase diagram (Fernandez et al. 2013, Fig. 4) drawn from our
-// jamming table: the regime predict_regime assigns at every node of a grid
-// of (mu0, phi), as the CSV that python/dilatant/plots/phase_diagram.py draws.
+// tables: the regime `dilatant predict` gives at every node of a grid of
+// (mu0, phi) — the bulk flow curves' where they decide (bulk_flow_table.hpp),
+// else the sediment table's (predict_regime) — as the CSV that
+// python/dilatant/plots/phase_diagram.py draws.
 #include <string>
 
+#include "analysis/bulk_flow_table.hpp"
 #include "analysis/jamming_table.hpp"
 
 namespace dilatant::analysis {
@@ -16,9 +19,12 @@ struct PhaseGrid {
   double phi_step = 0.002;
 };
 
-// Header "mu0,phi,regime,phi_max_bl,phi_rcp,margin_sigma,uncertain", one row
-// per node, mu0 outer, phi inner. Nodes are computed as start + k step (no
-// accumulated rounding), the last at or below the end.
-std::string phase_diagram_csv(const JammingTable& table, const PhaseGrid& grid);
+// Header "mu0,phi,regime,phi_max_bl,phi_rcp,margin_sigma,uncertain,source",
+// one row per node, mu0 outer, phi inner; source is "bulk" or "sediment", and
+// a bulk node has no margin_sigma (empty) and is not uncertain (as predict's
+// --json). Nodes are computed as start + k step (no accumulated rounding), the
+// last at or below the end. `bulk` nullptr: the sediment table alone.
+std::string phase_diagram_csv(const JammingTable& table, const BulkFlowTable* bulk,
+                              const PhaseGrid& grid);
 
 }  // namespace dilatant::analysis

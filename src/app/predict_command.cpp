@@ -7,6 +7,7 @@
 #include <iostream>
 #include <optional>
 
+#include "analysis/bulk_flow_table.hpp"
 #include "analysis/jamming_table.hpp"
 #include "analysis/onset_table.hpp"
 #include "analysis/phase_diagram.hpp"
@@ -23,11 +24,15 @@ namespace dilatant {
 CLI::App* add_predict_command(CLI::App& app, PredictCommandArgs& args) {
   CLI::App* p = app.add_subcommand(
       "predict",
-      "The flow regime of spheres with boundary friction mu0 at volume fraction phi, from "
-      "the measured jamming fractions (docs/jamming.md): cst when phi <= phi_max_BL(mu0), "
-      "dst up to phi_RCP (the frictionless jamming fraction), no_flow above; and the onset "
-      "scale of thickening, gamma_dot_c ~ C eta_f I_c^2/(s_c rho_p R^2), with I_c and C "
-      "measured on our flow curves. With --grid: the phase diagram over (mu0, phi).");
+      "The flow regime of spheres with boundary friction mu0 at volume fraction phi, from the "
+      "first source that decides it (docs/jamming.md \"The predictor's sources\"): a "
+      "Wyart-Cates fit if given (--model); else the flow states measured in bulk, in the "
+      "Lees-Edwards box (data/jamming/bulk_flow_states.csv), at the same mu0 and phi up to a "
+      "ramp that flowed (+ 0.0005); else the sediment's jamming fractions: cst when phi <= "
+      "phi_max_BL(mu0), dst up to phi_RCP (the frictionless jamming fraction), no_flow above. "
+      "The answer names its source. And the onset scale of thickening, gamma_dot_c ~ C eta_f "
+      "I_c^2/(s_c rho_p R^2), with I_c and C measured on our flow curves. With --grid: the "
+      "phase diagram over (mu0, phi).");
   args.s_c = friction_defaults::kSc;
   auto* mu0 = p->add_option_function<double>(
       "--mu0",
@@ -51,6 +56,11 @@ CLI::App* add_predict_command(CLI::App& app, PredictCommandArgs& args) {
                 "CSV with columns mu0, phi_max, phi_max_err (default: the built-in table, "
                 "data/jamming/phi_max_bl.csv)")
       ->check(CLI::ExistingFile);
+  p->add_option("--bulk-table", args.bulk_table,
+                "CSV of flow states measured in bulk (columns mu0, phi_bulk, regime = "
+                "cst|dst|jammed, max_lambda, jam_lambda, cell, source, sample), asked before the "
+                "sediment table; 'none': the sediment table alone (default: the built-in "
+                "data/jamming/bulk_flow_states.csv)");
   auto* grid = p->add_flag("--grid", args.grid,
                            "the regime over mu0 0-1 and phi 0.50-0.66: DIR/phase_diagram.csv "
                            "and its plot (PNG, SVG)");
@@ -61,7 +71,7 @@ CLI::App* add_predict_command(CLI::App& app, PredictCommandArgs& args) {
                               "--phi (cst, dst, shear_jamming, no_flow) and, with --stress, the "
                               "state of the stress-controlled flow there")
                     ->check(CLI::ExistingFile);
-  model->excludes(grid)->excludes(mu0)->excludes("--table");
+  model->excludes(grid)->excludes(mu0)->excludes("--table")->excludes("--bulk-table");
   p->add_option("--sample", args.sample, "--model: the fitted sample (default: the only one)")
       ->needs(model);
   p->add_option_function<double>(
@@ -85,11 +95,22 @@ analysis::JammingTable load_table(const std::string& file) {
   return file.empty() ? analysis::JammingTable::builtin() : analysis::JammingTable::read(file);
 }
 
+std::optional<analysis::BulkFlowTable> load_bulk_table(const std::string& file) {
+  if (file == "none") return std::nullopt;
+  return file.empty() ? analysis::BulkFlowTable::builtin() : analysis::BulkFlowTable::read(file);
+}
+
+const analysis::BulkFlowTable* bulk_or_null(const std::optional<analysis::BulkFlowTable>& t) {
+  return t ? &*t : nullptr;
+}
+
 int draw_grid(const PredictCommandArgs& args) {
   const std::filesystem::path out = args.out.empty() ? "out/predict" : args.out;
   prepare_output_folder(out);
-  write_file_atomically(out / "phase_diagram.csv",
-                        analysis::phase_diagram_csv(load_table(args.table), {}));
+  const auto bulk = load_bulk_table(args.bulk_table);
+  write_file_atomically(
+      out / "phase_diagram.csv",
+      analysis::phase_diagram_csv(load_table(args.table), bulk_or_null(bulk), {}));
   if (!args.no_plots) {
     const std::string failure = run_plot_script(args.python, plot_script("phase_diagram.py"), out);
     if (!failure.empty())
@@ -156,21 +177,29 @@ int execute_predict_command(const PredictCommandArgs& args) {
         "predict needs --mu0 and --phi (or --grid for the whole diagram, or --model FILE and "
         "--phi)");
   analysis::check_prediction_input(args.mu0, args.phi, args.s_c);  // before the table is read
-  const auto report = analysis::predict(load_table(args.table), args.mu0, args.phi, args.s_c);
+  const auto table = load_table(args.table);
+  const auto bulk = load_bulk_table(args.bulk_table);
+  const auto report = analysis::predict(table, bulk_or_null(bulk), args.mu0, args.phi, args.s_c);
+  const std::string table_name = args.table.empty() ? "built-in" : args.table;
   if (args.json) {
-    std::cout
-        << analysis::prediction_json(report, args.table.empty() ? "built-in" : args.table).dump(2)
-        << "\n";
+    std::cout << analysis::prediction_json(report, table_name).dump(2) << "\n";
     return 0;
   }
   const auto& p = report.regime;
   const auto& onset = report.onset;
-  std::cout << fmt::format(
-      "{} (phi {} against phi_max_BL({}) = {:.4f} +- {:.4f} and phi_RCP = {:.4f} +- {:.4f}{})\n",
-      analysis::flow_regime_name(p.regime), args.phi, args.mu0, p.phi_max_bl.value,
-      p.phi_max_bl.error, p.phi_rcp.value, p.phi_rcp.error,
-      p.uncertain ? fmt::format("; within {:.1f} sigma of a boundary: uncertain", p.margin_sigma)
-                  : "");
+  const std::string sediment = fmt::format(
+      "phi {} against phi_max_BL({}) = {:.4f} +- {:.4f} and phi_RCP = {:.4f} +- {:.4f}", args.phi,
+      args.mu0, p.phi_max_bl.value, p.phi_max_bl.error, p.phi_rcp.value, p.phi_rcp.error);
+  if (report.source() == analysis::RegimeSource::BulkFlowCurves)
+    std::cout << fmt::format("{} (measured in bulk; the sediment table alone would say {}: {})\n",
+                             analysis::flow_regime_name(report.answer()),
+                             analysis::flow_regime_name(p.regime), sediment);
+  else
+    std::cout << fmt::format(
+        "{} ({}{})\n", analysis::flow_regime_name(p.regime), sediment,
+        p.uncertain ? fmt::format("; within {:.1f} sigma of a boundary: uncertain", p.margin_sigma)
+                    : "");
+  std::cout << fmt::format("source: {}\n", analysis::source_detail(report, table_name));
   if (onset.available && onset.too_far)
     std::cout << fmt::format("onset of thickening: not given ({}; docs/jamming.md)\n",
                              analysis::onset_withheld(onset, args.phi));

@@ -198,6 +198,12 @@ std::vector<BadInput> catalogue() {
        {"predict", "--mu0", "0.1", "--phi", "0.5", "--table", "t.csv"},
        "t.csv:2"},
       {"predict: grid and a point", {}, {"predict", "--grid", "--phi", "0.5"}, "--grid"},
+      {"predict: bulk table with an unknown regime",
+       {{"b.csv",
+         "mu0,phi_bulk,regime,max_lambda,jam_lambda,cell,source,sample\n1,0.58,flows,100,,c,s,"
+         "x\n"}},
+       {"predict", "--mu0", "1", "--phi", "0.58", "--bulk-table", "b.csv"},
+       "b.csv:2: regime \"flows\""},
   };
 }
 

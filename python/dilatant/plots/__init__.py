@@ -21,6 +21,7 @@ its docstring gives the arguments) or called from Python:
   paper_tables          the Markdown tables of every point (tables.md)
   jamming               docs/jamming.md: phi_max_BL(mu0), shear-jamming phi_c(mu0)
   onset_table           the onsets of thickening (data/jamming/onsets.csv)
+  bulk_flow_states      the Lees–Edwards ramps' flow states (data/jamming/bulk_flow_states.csv)
   predictor_checks      `dilatant predict` against every flow curve
   analysis_truth_table  docs/analysis.md: recovered against true values
 

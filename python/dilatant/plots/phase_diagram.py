@@ -6,7 +6,9 @@
     writes DIR/phase_diagram.png/.svg
 
 Regions coloured by regime (CST, DST, no flow), the nodes within 2 sigma of a
-boundary (the table's error) hatched as uncertain, and the paper's four
+boundary (the table's error) hatched as uncertain, the nodes the bulk flow
+curves decided (`source` bulk: data/jamming/bulk_flow_states.csv) as black
+dots, and the paper's four
 polymers (Fernandez et al. 2013, Fig. 4) as lines at their measured phi_max:
 their mu0 is not in the paper's text.
 """
@@ -47,6 +49,9 @@ def draw(out):
     ax.pcolormesh(mu, phi, regime, cmap=ListedColormap(COLOURS), vmin=-0.5, vmax=2.5,
                   shading="nearest", rasterized=True)
     ax.contourf(mu, phi, uncertain, levels=[0.5, 1.5], colors="none", hatches=["...."])
+    bulk = [(float(r["mu0"]), float(r["phi"])) for r in rows if r.get("source") == "bulk"]
+    if bulk:
+        ax.scatter(*zip(*bulk), s=4, color="k", label="measured in bulk", zorder=3)
     for collection in getattr(ax, "collections", []):
         collection.set_rasterized(True)
     for label, value in PAPER.items():
@@ -57,7 +62,7 @@ def draw(out):
     ax.fill_between([], [], color="none", hatch="....", label="within 2 sigma")
     ax.set_xlabel(r"boundary friction $\mu_0$")
     ax.set_ylabel(r"volume fraction $\phi$")
-    ax.set_title("dilatant predict --grid: regime from phi_max_BL(mu0)", fontsize=10)
+    ax.set_title("dilatant predict --grid: bulk flow curves, else phi_max_BL(mu0)", fontsize=10)
     ax.legend(loc="lower left", fontsize=8)
     save(fig, out, "phase_diagram")
 

@@ -4,8 +4,10 @@
   PYTHONPATH=python python3 -m dilatant.plots.predictor_checks DILATANT OUT.csv DIR...
 
 For each flowcurves.csv under the DIRs, each curve with two lambdas or more
-(same friction law and fluid forces, mu0, nominal phi, seed, s_c) gets its mean phi_bulk, the regime `dilatant predict`
-gives there, and what the curve did: the lambda range run, whether a point
+(same friction law and fluid forces, mu0, nominal phi, seed, s_c) gets its mean phi_bulk,
+the regime `dilatant predict` gives there from the sediment table alone
+(`--bulk-table none`: the bulk table is read from some of these very curves, so
+it would check itself), and what the curve did: the lambda range run, whether a point
 jammed (and the first lambda that did), and eta at the highest lambda over eta
 at the lowest (thickening when > 1). Written to OUT.csv (via OUT.csv.part).
 """
@@ -60,7 +62,8 @@ def main(argv):
                 ratio = (float(flowing[-1]["eta"]) / float(flowing[0]["eta"])
                          if len(flowing) > 1 else "")
                 p = json.loads(subprocess.run(
-                    [binary, "predict", "--mu0", str(mu0), "--phi", f"{phi_bulk:.4f}", "--json"],
+                    [binary, "predict", "--mu0", str(mu0), "--phi", f"{phi_bulk:.4f}", "--json",
+                     "--bulk-table", "none"],
                     check=True, capture_output=True, text=True).stdout)
                 rows.append({
                     "source": str(flow.parent), "model": law, "mu0": mu0, "phi": phi,

@@ -1,0 +1,162 @@
+"""The flow states measured in the Lees–Edwards box, as the table `dilatant
+predict` compiles in before the sediment's (data/jamming/bulk_flow_states.csv,
+data/jamming/README.md, docs/jamming.md "The predictor's sources"):
+
+    PYTHONPATH=python python3 -m dilatant.plots.bulk_flow_states DIR... > bulk_flow_states.csv
+
+Every flowcurves.csv under the DIRs is read with the sweep.toml beside it. A
+curve counts when its points ran in the Lees–Edwards box (`cell.boundary`),
+under stress control (a ramp in lambda), with the literal model (Stribeck law,
+no lubrication films, no drag), the model of the sediment table; any other
+curve is named on stderr and left out. A curve is a sweep's `sample` (with
+its nominal phi and seed); its points are those with status `done`, in lambda:
+
+* no point jammed: `cst`, up to its largest lambda (`max_lambda`);
+* its first (lowest-stress) point jammed: `jammed` (no flow at all);
+* it flowed, then jammed at `jam_lambda`, and the sweep's cold start at that
+  stress jammed too (`jam_cold_start`): `dst`. A jam without a confirming cold
+  start is named on stderr and left out: it may be the ramp's history.
+
+phi_bulk is the curve's mean (in the Lees–Edwards box it is the box's
+fraction). `max_valid_lambda` is the largest flowing lambda whose point is
+`valid` (at most 5% of contacts beyond s_lim), `max_frac_unconverged` the
+largest share of solver steps that hit max_iterations over the curve's points.
+`source` is the flowcurves.csv as given, `sample` the curve's label in it.
+"""
+import csv
+import sys
+import tomllib
+from collections import defaultdict
+from pathlib import Path
+
+HEADER = ("mu0,phi_bulk,regime,max_lambda,max_valid_lambda,jam_lambda,points,cell,seed,"
+          "max_frac_unconverged,version,source,sample")
+
+
+def setting(row, sweep, section, key):
+    """A swept key is a column of the row; else the sweep's value."""
+    return row.get(f"{section}.{key}") or str(sweep.get(section, {}).get(key, ""))
+
+
+def why_not_bulk(row, sweep):
+    """None when the point is a stress-controlled literal-model point in the
+    Lees–Edwards box, else what it is instead."""
+    checks = [("cell", "boundary", "lees-edwards"), ("cell", "control", "stress"),
+              ("friction", "law", "stribeck"), ("fluid", "lubrication", "none"),
+              ("fluid", "drag", "none")]
+    # A sweep older than a key has none: it ran with the key's first value.
+    default_of = {"boundary": "walls (unset: older than the key)",
+                  "control": "stress (unset)"}
+    for section, key, wanted in checks:
+        value = setting(row, sweep, section, key).strip("'\"")
+        if value == "" and key == "control":
+            value = "stress"
+        if value != wanted:
+            return f"{section}.{key} = {value or default_of.get(key, '(unset)')}"
+    return None
+
+
+def cell_name(row, sweep):
+    size = row.get("cell.size") or str(sweep["cell"]["size"])
+    return "x".join(f"{float(v):g}" for v in size.strip("[] ").split(","))
+
+
+def fmt(x):
+    return "" if x is None else f"{x:g}"
+
+
+def curve_row(source, sample, points, sweep):
+    points.sort(key=lambda r: float(r["lambda"]))
+    jammed = [r for r in points if r["jammed"] == "true"]
+    first_jam = float(jammed[0]["lambda"]) if jammed else None
+    flowing = [r for r in points if r["jammed"] != "true"
+               and (first_jam is None or float(r["lambda"]) < first_jam)]
+    if not jammed:
+        regime = "cst"
+    elif not flowing:
+        regime = "jammed"
+    elif jammed[0].get("jam_cold_start") == "jammed":
+        regime = "dst"
+    else:
+        return None, (f"{source} {sample}: jammed at lambda {first_jam:g} without a cold start "
+                      "that confirms it")
+    valid = [float(r["lambda"]) for r in flowing if r["valid"] == "true"]
+    phi_bulk = sum(float(r["phi_bulk"]) for r in points) / len(points)
+    unconverged = max(float(r["frac_steps_unconverged"] or 0) for r in points)
+    versions = "+".join(sorted({r["version"] for r in points}))
+    row = [fmt(float(points[0]["mu0"])), f"{phi_bulk:.4f}", regime,
+           fmt(float(flowing[-1]["lambda"]) if flowing else None), fmt(max(valid, default=None)),
+           fmt(first_jam), str(len(points)), cell_name(points[0], sweep),
+           points[0].get("cell.seed") or str(sweep["cell"].get("seed", 1)), f"{unconverged:.2g}",
+           versions, source, sample]
+    if any("," in field for field in row):
+        return None, f"{source} {sample}: a field holds a comma: {row}"
+    return ",".join(row), None
+
+
+ORDER = {"cst": 0, "dst": 1, "jammed": 2}
+
+
+def contradictions(rows):
+    """Pairs of rows of one mu0 where the weaker state (cst < dst < jammed) is
+    at or above the stronger one in phi: the order predict's rule assumes."""
+    fields = [row.split(",") for row in rows]
+    out = []
+    for lo in fields:
+        for hi in fields:
+            if (float(lo[0]) == float(hi[0]) and ORDER[lo[2]] < ORDER[hi[2]]
+                    and float(lo[1]) >= float(hi[1])):
+                out.append(f"{lo[2]} at {lo[1]} ({lo[11]} {lo[12]}) against {hi[2]} at {hi[1]} "
+                           f"({hi[11]} {hi[12]})")
+    return out
+
+
+def rows_of(flow_file):
+    with open(flow_file.parent / "sweep.toml", "rb") as f:
+        sweep = tomllib.load(f)
+    curves, skipped = defaultdict(list), []
+    for r in csv.DictReader(open(flow_file)):
+        if r["status"] != "done":
+            continue
+        why = why_not_bulk(r, sweep)
+        if why:
+            skipped.append(f"{flow_file} {r['sample']}: {why}")
+            continue
+        curves[(r["sample"], r["phi"], r.get("cell.seed", ""))].append(r)
+    out = []
+    for (sample, _, _), points in curves.items():
+        row, why = curve_row(flow_file.as_posix(), sample, points, sweep)
+        if row:
+            out.append((float(points[0]["mu0"]), row))
+        else:
+            skipped.append(why)
+    return out, sorted(set(skipped))
+
+
+def main(argv):
+    if len(argv) < 2:
+        sys.exit(__doc__)
+    rows, skipped = [], []
+    for d in argv[1:]:
+        for flow in sorted(Path(d).rglob("flowcurves.csv")):
+            if not (flow.parent / "sweep.toml").exists():
+                skipped.append(f"{flow}: no sweep.toml beside it")
+                continue
+            r, s = rows_of(flow)
+            rows += r
+            skipped += s
+    for s in skipped:
+        print(f"left out: {s}", file=sys.stderr)
+    clashes = contradictions([row for _, row in rows])
+    if clashes:
+        # `dilatant predict` refuses such a table (and would then refuse every
+        # query): the measured curves disagree, and a person must decide why.
+        sys.exit("bulk_flow_states: curves contradict each other (a ramp flows at or above a "
+                 "fraction where another of its mu0 jams):\n  " + "\n  ".join(clashes))
+    print(HEADER)
+    for _, row in sorted(rows, key=lambda item: item[0]):
+        print(row)
+
+
+if __name__ == "__main__":
+    main(sys.argv)

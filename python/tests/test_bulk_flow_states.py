@@ -1,0 +1,67 @@
+"""The bulk flow states `dilatant predict` compiles in (data/jamming/bulk_flow_states.csv)
+are what dilatant.plots.bulk_flow_states makes from the committed flow curves, and
+the script classifies a ramp as the table's README says: cst, dst only with a
+confirming cold start, jammed at its first stress; curves outside the Lees–Edwards
+box are left out; curves that contradict each other stop it."""
+import pytest
+
+from conftest import SOURCE_DIR
+from dilatant.plots import bulk_flow_states
+
+SWEEP = """[cell]
+size = [12.0, 8.0, 14.0]
+seed = 1
+boundary = 'lees-edwards'
+control = 'stress'
+[friction]
+law = 'stribeck'
+[fluid]
+lubrication = 'none'
+drag = 'none'
+"""
+COLUMNS = ("sample,phi,mu0,lambda,status,jammed,valid,phi_bulk,frac_steps_unconverged,version,"
+           "jam_cold_start")
+
+
+def write_sweep(folder, rows, sweep=SWEEP):
+    folder.mkdir(parents=True)
+    (folder / "sweep.toml").write_text(sweep)
+    (folder / "flowcurves.csv").write_text(COLUMNS + "\n" + "\n".join(rows) + "\n")
+
+
+def test_the_committed_table_is_the_scripts_output(monkeypatch, capsys):
+    monkeypatch.chdir(SOURCE_DIR)
+    bulk_flow_states.main(["bulk_flow_states", "docs/paper-reproduction"])
+    made = capsys.readouterr().out
+    assert made == (SOURCE_DIR / "data/jamming/bulk_flow_states.csv").read_text()
+
+
+def test_ramps_are_classified_and_other_cells_left_out(tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)
+    write_sweep(tmp_path / "le", [
+        "A,0.6,1,10,done,false,true,0.60,0,0.8.0,",
+        "A,0.6,1,100,done,true,true,0.60,0,0.8.0,jammed",   # dst, confirmed
+        "B,0.61,1,10,done,false,true,0.61,0,0.8.0,",
+        "B,0.61,1,100,done,true,true,0.61,0,0.8.0,",        # a jam no cold start confirms
+        "C,0.62,1,1,done,true,true,0.62,0,0.8.0,",          # jammed at its first stress
+        "D,0.55,1,1,done,false,true,0.55,0.1,0.8.0,",
+        "D,0.55,1,10,done,false,false,0.55,0.2,0.8.0,"])    # cst, valid to lambda 1
+    write_sweep(tmp_path / "walls", ["E,0.58,1,1,done,false,true,0.58,0,0.8.0,"],
+                SWEEP.replace("'lees-edwards'", "'walls'"))
+    bulk_flow_states.main(["bulk_flow_states", "le", "walls"])
+    out = capsys.readouterr()
+    rows = out.out.splitlines()
+    assert rows[0] == bulk_flow_states.HEADER
+    assert {r.split(",")[12]: r.split(",")[2:6] for r in rows[1:]} == {
+        "A": ["dst", "10", "10", "100"], "C": ["jammed", "", "", "1"],
+        "D": ["cst", "10", "1", ""]}
+    assert "le/flowcurves.csv B: jammed at lambda 100 without a cold start" in out.err
+    assert "walls/flowcurves.csv E: cell.boundary = walls" in out.err
+
+
+def test_contradicting_curves_stop_the_script(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    write_sweep(tmp_path / "le", ["A,0.6,1,1,done,true,true,0.57,0,0.8.0,",
+                                  "B,0.6,1,1,done,false,true,0.58,0,0.8.0,"])
+    with pytest.raises(SystemExit, match="contradict"):
+        bulk_flow_states.main(["bulk_flow_states", "le"])
