@@ -123,7 +123,9 @@ std::string flowcurves_csv(const SweepPlan& plan, const std::vector<PointRecord>
   for (auto c : kSummaryBefore) header.emplace_back(c);
   header.emplace_back("phi_realized");
   for (auto c : kSummaryAfter) header.emplace_back(c);
-  for (auto c : {"sample"sv, "start"sv, "dir"sv, "jam_cold_start"sv}) header.emplace_back(c);
+  for (auto c : {"sample"sv, "start"sv, "dir"sv, "jam_cold_start"sv, "jam_cold_start_phi"sv,
+                 "jam_cold_start_phi_bulk"sv})
+    header.emplace_back(c);
 
   std::string out;
   for (std::size_t k = 0; k < header.size(); ++k) out += (k ? "," : "") + field(header[k]);
@@ -154,6 +156,13 @@ std::string flowcurves_csv(const SweepPlan& plan, const std::vector<PointRecord>
                   : !r.cold_start.is_object()           ? "pending"
                   : r.cold_start.value("jammed", false) ? "jammed"
                                                         : "flowed");
+    // The cold start's nominal phi and the bulk fraction it reached
+    // (sweep.cold_start_phi; docs/sweeps.md "Ramps to the jam").
+    for (auto c : {"phi_requested"sv, "phi_bulk"sv}) {
+      const auto it = r.cold_start.is_object() ? r.cold_start.find(c) : r.cold_start.end();
+      row.push_back(
+          it != r.cold_start.end() && it->is_number() ? fmt::format("{}", it->get<double>()) : "");
+    }
     for (std::size_t k = 0; k < row.size(); ++k) out += (k ? "," : "") + row[k];
     out += "\n";
   }

@@ -28,7 +28,7 @@ constexpr std::string_view kSweepTable = "sweep";
 constexpr std::string_view kPointsTable = "points";
 constexpr std::array kSettingsKeys = {
     "jobs"sv,        "continuation"sv, "continuation_strain"sv, "continuation_transient_strain"sv,
-    "stop_at_jam"sv, "confirm_jams"sv};
+    "stop_at_jam"sv, "confirm_jams"sv, "cold_start_phi"sv};
 // Keys whose single value is an array: swept only when given a list of arrays.
 constexpr std::array kArrayKeys = {"cell.size"sv, "scene.gravity"sv, "scene.box"sv,
                                    "scene.periodic"sv, "scene.planes"sv};
@@ -233,6 +233,11 @@ SweepSettings read_settings(const toml::table& t, const std::string& source) {
       (key.str() == "continuation"  ? s.continuation
        : key.str() == "stop_at_jam" ? s.stop_at_jam
                                     : s.confirm_jams) = *v;
+    } else if (key.str() == "cold_start_phi") {
+      const auto v = node.value_exact<std::string>();
+      if (!v || (*v != "matched" && *v != "nominal")) fail("expected \"matched\" or \"nominal\"");
+      s.cold_start_phi = *v == "matched" ? SweepSettings::ColdStartPhi::Matched
+                                         : SweepSettings::ColdStartPhi::Nominal;
     } else if (key.str() == "continuation_strain" || key.str() == "continuation_transient_strain") {
       const auto v = node.value<double>();
       if (!v || !node.is_number()) fail("expected a number");
@@ -253,7 +258,7 @@ SweepSettings read_settings(const toml::table& t, const std::string& source) {
   }
   if (!s.continuation)
     for (const auto name : {"continuation_strain"sv, "continuation_transient_strain"sv,
-                            "stop_at_jam"sv, "confirm_jams"sv})
+                            "stop_at_jam"sv, "confirm_jams"sv, "cold_start_phi"sv})
       if (const auto* node = t.get(name))
         throw InputError(
             fmt::format("{}: applies to continued points only, and sweep.continuation is false",

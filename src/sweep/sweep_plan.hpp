@@ -77,6 +77,11 @@ struct SweepSettings {
   std::optional<double> continuation_transient_strain;
   bool stop_at_jam = true;
   bool confirm_jams = true;
+  // The nominal phi of a jam's cold start (docs/sweeps.md "Ramps to the jam"):
+  // the ramp's own (nominal), or shifted by the ramp's change of the bulk
+  // before the jam (matched; sweep_work.cpp).
+  enum class ColdStartPhi { Nominal, Matched };
+  ColdStartPhi cold_start_phi = ColdStartPhi::Nominal;
 };
 
 struct SweepPoint {

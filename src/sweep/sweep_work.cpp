@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+#include <limits>
 #include <optional>
 #include <set>
 
@@ -26,11 +28,17 @@ std::string one_line(std::string text) {
   return text;
 }
 
-SweepPoint cold_point(const SweepPoint& p) {
+SweepPoint cold_point(const SweepPoint& p, Config config) {
   SweepPoint cold = p;
-  cold.config = p.cold_start.value_or(p.config);
+  cold.config = std::move(config);
   cold.continues_from.reset();
   return cold;
+}
+
+double summary_phi_bulk(const PointRecord& r) {
+  const auto it = r.summary.is_object() ? r.summary.find("phi_bulk") : r.summary.end();
+  return it != r.summary.end() && it->is_number() ? it->get<double>()
+                                                  : std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace
@@ -77,8 +85,8 @@ bool SweepWork::load_point(std::size_t i) {
     records_[i].status = PointStatus::Done;
     records_[i].summary = std::move(summary);
   }
-  if (needs_confirmation(i) &&
-      inspect_point_folder(cold_point(p), folder / kColdStart) == PointState::Done) {
+  if (needs_confirmation(i) && inspect_point_folder(cold_point(p, cold_config(i)),
+                                                    folder / kColdStart) == PointState::Done) {
     try {
       auto cold = read_summary(folder / kColdStart / "summary.json");
       std::lock_guard lock(mutex_);
@@ -125,6 +133,38 @@ void SweepWork::run_unit(const WorkUnit& unit, bool inspect_first) {
   for (std::size_t i : unit) run_point(i);
 }
 
+// The cold start of continued point i's jam. A wall cell's bulk fraction is
+// not its nominal phi (the layers at the walls are looser), and a ramp
+// compacts (or dilates) its bulk as it goes, so a cold start at the ramp's
+// nominal phi starts from another packing fraction than the state the jammed
+// point started from (0.010-0.015 denser on the paper's DST map). The ramp's
+// first point is a cold start at the nominal phi: its phi_bulk measured the
+// offset. Matched: shift the nominal phi by the ramp's change of the bulk up
+// to the jam, from the first point to the one the jammed point continued from,
+//     phi_cold = phi + phi_bulk(previous point) - phi_bulk(first point),
+// so that the cold start begins at the bulk fraction the stress step met, as
+// far as the offset does not change over that shift. Not the jammed point's
+// own phi_bulk: a jam dilates the packing it stops (by 0.02 in the small cell
+// of tests/sweep/ramp_jam_test.cpp), and so does its cold start's. In a
+// Lees–Edwards box phi_bulk is the box's at every point: no shift.
+Config SweepWork::cold_config(std::size_t i) const {
+  const SweepPoint& p = plan_.points[i];
+  Config config = p.cold_start.value_or(p.config);
+  if (plan_.settings.cold_start_phi != SweepSettings::ColdStartPhi::Matched || !p.continues_from)
+    return config;
+  std::size_t first = i;
+  while (plan_.points[first].continues_from) first = *plan_.points[first].continues_from;
+  std::lock_guard lock(mutex_);
+  const double shift =
+      summary_phi_bulk(records_[*p.continues_from]) - summary_phi_bulk(records_[first]);
+  CellConfig* cell = config.cell();
+  if (cell != nullptr && std::isfinite(shift) && shift != 0.0) {
+    cell->phi += shift;
+    config.resolved = to_toml(config);
+  }
+  return config;
+}
+
 // A continued point that jammed, whose cold start has not run yet.
 bool SweepWork::needs_confirmation(std::size_t i) const {
   std::lock_guard lock(mutex_);
@@ -136,7 +176,7 @@ bool SweepWork::needs_confirmation(std::size_t i) const {
 // cold-start/ (resumable like a point): a ramp's jam is reported with whether
 // the same stress jams a cold start too.
 void SweepWork::confirm_jam(std::size_t i) {
-  const SweepPoint cold = cold_point(plan_.points[i]);
+  const SweepPoint cold = cold_point(plan_.points[i], cold_config(i));
   const auto folder = options_.out / plan_.points[i].folder / kColdStart;
   const PointState state = inspect_point_folder(cold, folder);
   try {

@@ -53,7 +53,8 @@ TEST(FlowTable, OneRowPerPointSweptKeysFirstThenStatusAndSummary) {
             0u)
       << rows[0];
   const auto header = analysis::split_fields(rows[0], ',');
-  EXPECT_EQ(header.back(), "jam_cold_start");
+  EXPECT_EQ(header.back(), "jam_cold_start_phi_bulk");
+  EXPECT_EQ(header[header.size() - 3], "jam_cold_start");
   const auto column = [&](std::size_t row, const std::string& name) {
     const auto fields = analysis::split_fields(rows[row], ',');
     EXPECT_EQ(fields.size(), header.size()) << rows[row];

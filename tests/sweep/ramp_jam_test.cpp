@@ -3,11 +3,15 @@
 // branch at lambda 0.01 and jams once its contacts are boundary-lubricated
 // (mu0 1 at nominal phi 0.60, far above phi_max_BL(1) = 0.559: docs/jamming.md).
 // The jam is confirmed from a cold start, the ramp stops there, and re-running
-// the sweep neither reruns nor loses any of it.
+// the sweep neither reruns nor loses any of it. (The lambda 0.1 point before the
+// jam dilates the bulk from 0.581 to 0.568 and the jam to 0.563; the matched
+// cold start at nominal 0.587 jams at 0.545, the nominal one at 0.60 at 0.583:
+// a jam's phi_bulk is that of the packing it dilated, docs/sweeps.md.)
 #include <gtest/gtest.h>
 
 #include <map>
 #include <sstream>
+#include <string>
 
 #include "analysis/delimited_text.hpp"
 #include "app/cli_runner.hpp"
@@ -55,30 +59,45 @@ std::map<std::string, std::string> row(const fs::path& table, std::size_t k) {
 
 TEST(RampToJam, StopsAtTheFirstJamAndConfirmsItFromAColdStart) {
   test::TempDir dir;
-  const SweepPlan plan = parse_sweep(kRamp, "ramp.toml", ".", {});
+  // Two flowing points before the jam, and the cold start's phi matched to
+  // the bulk the jam's stress step met.
+  const SweepPlan plan = parse_sweep(
+      kRamp, "ramp.toml", ".",
+      {"fluid.lambda=[0.01, 0.1, 10000.0, 100000.0]", "sweep.cold_start_phi=\"matched\""});
   SweepRunOptions o;
   o.out = dir.path();
   const SweepOutcome first = run_sweep(plan, o);
   const fs::path table = dir.path() / "flowcurves.csv";
-  auto flowing = row(table, 0), jam = row(table, 1), above = row(table, 2);
+  auto flowing = row(table, 0), before_jam = row(table, 1), jam = row(table, 2),
+       above = row(table, 3);
   ASSERT_EQ(flowing["status"], "done") << flowing["error"];
+  ASSERT_EQ(before_jam["status"], "done") << before_jam["error"];
   EXPECT_EQ(flowing["jammed"], "false");
+  EXPECT_EQ(before_jam["jammed"], "false");
   EXPECT_EQ(flowing["jam_cold_start"], "");  // flowed: nothing to confirm
   ASSERT_EQ(jam["status"], "done") << jam["error"];
   EXPECT_EQ(jam["jammed"], "true");
   EXPECT_EQ(jam["jam_cold_start"], "jammed");
   EXPECT_TRUE(fs::is_regular_file(dir.path() / jam["dir"] / "cold-start" / "summary.json"));
+  // Matched: the nominal phi shifted by the ramp's change of the bulk from its
+  // first point to the one the jam continued from (sweep_work.cpp); the cold
+  // start's own bulk fraction is reported beside it.
+  const double change = std::stod(before_jam["phi_bulk"]) - std::stod(flowing["phi_bulk"]);
+  EXPECT_NE(change, 0.0);
+  EXPECT_DOUBLE_EQ(std::stod(jam["jam_cold_start_phi"]), 0.60 + change);
+  EXPECT_GT(std::stod(jam["jam_cold_start_phi_bulk"]), 0.5);
+  EXPECT_EQ(flowing["jam_cold_start_phi"], "");
   EXPECT_EQ(above["status"], "skipped");
   EXPECT_NE(above["error"].find(jam["dir"]), std::string::npos) << above["error"];
-  EXPECT_EQ(first.done, 2u);
+  EXPECT_EQ(first.done, 3u);
   EXPECT_EQ(first.above_jam, 1u);
 
   // Again: everything is on disk, nothing runs, the table is the same.
   const auto before = test::read_text(dir.path() / jam["dir"] / "cold-start" / "summary.json");
   const SweepOutcome again = run_sweep(plan, o);
-  EXPECT_EQ(again.skipped, 2u);
-  EXPECT_EQ(row(table, 1)["jam_cold_start"], "jammed");
-  EXPECT_EQ(row(table, 2)["status"], "skipped");
+  EXPECT_EQ(again.skipped, 3u);
+  EXPECT_EQ(row(table, 2)["jam_cold_start"], "jammed");
+  EXPECT_EQ(row(table, 3)["status"], "skipped");
   EXPECT_EQ(test::read_text(dir.path() / jam["dir"] / "cold-start" / "summary.json"), before);
 }
 
@@ -90,6 +109,22 @@ TEST(RampToJam, BothRulesCanBeTurnedOffAndAreRefusedWithoutContinuation) {
   EXPECT_THROW(
       parse_sweep(kRamp, "ramp.toml", ".", {"sweep.continuation=false", "sweep.stop_at_jam=true"}),
       InputError);
+}
+
+TEST(RampToJam, TheColdStartsPhiIsMatchedOrNominalAndNothingElse) {
+  EXPECT_EQ(parse_sweep(kRamp, "ramp.toml", ".", {}).settings.cold_start_phi,
+            SweepSettings::ColdStartPhi::Nominal);
+  EXPECT_EQ(parse_sweep(kRamp, "ramp.toml", ".", {"sweep.cold_start_phi=\"matched\""})
+                .settings.cold_start_phi,
+            SweepSettings::ColdStartPhi::Matched);
+  try {
+    parse_sweep(kRamp, "ramp.toml", ".", {"sweep.cold_start_phi=\"loose\""});
+    FAIL() << "a cold_start_phi of \"loose\" was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("sweep.cold_start_phi"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("\"matched\" or \"nominal\""), std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
