@@ -98,6 +98,26 @@ TEST_F(PressureCell, TheMeasuredNormalStressIsTheImposedOne) {
   }
 }
 
+// mu_eff is Boyer, Guazzelli & Pouliquen's tau / P with P the imposed normal
+// stress (measure/cell_records.hpp); the flow's own -sigma_zz equals P on
+// average, so tau over the measured normal stress agrees with it within the
+// normal stress's block error at 3 sigma (tau's errors cancel in the ratio of
+// the two: mu_eff (p - P) / p). mu_pressure is tau over -tr(sigma)/3.
+TEST_F(PressureCell, MuEffIsTheShearStressOverTheImposedNormalStress) {
+  for (const auto* s : {&low_, &high_}) {
+    const nlohmann::json& j = *s;
+    EXPECT_EQ(j["mu_eff_definition"], "shear_stress_measured / normal_stress_imposed");
+    const double tau = j["shear_stress_measured"], p = j["normal_stress_imposed"];
+    const double mu = j["mu_eff"];
+    EXPECT_NEAR(mu, tau / p, 1e-12 * mu);
+    EXPECT_NEAR(j["mu_eff_err"].get<double>(), j["shear_stress_measured_err"].get<double>() / p,
+                1e-12 * mu);
+    const double measured = j["normal_stress"], err = j["normal_stress_err"];
+    EXPECT_NEAR(tau / measured, mu, 3.0 * mu * err / measured) << "P = " << p;
+    EXPECT_NEAR(j["mu_pressure"].get<double>(), tau / j["pressure"].get<double>(), 1e-12 * mu);
+  }
+}
+
 // Steady: the volume fraction and the friction coefficient are averages with
 // small errors, mu_eff that of a frictional flow (between mu0 / 4 and 1), the
 // height consistent with phi (H = N v / (A phi)), the profile linear.
