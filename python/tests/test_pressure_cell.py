@@ -83,3 +83,25 @@ def test_a_pressure_sweeps_plot_is_mu_and_phi_against_j(tmp_path):
     sweep_plots.draw(tmp_path)
     assert (tmp_path / "plots" / "mu_phi_of_J.png").stat().st_size > 0
     assert not (tmp_path / "plots" / "flow_curves.png").exists()
+
+
+def test_a_pressure_cell_resumed_from_its_checkpoint_goes_on_bit_for_bit(tmp_path):
+    """The checkpoint keeps the lid's speed W; the contacts of the next step
+    read the box's dilation rate W / H, which resuming restores (a lid still
+    compacting from phi 0.51, films and drag)."""
+    import numpy as np
+
+    films = {"cell": {**PRESSURE["cell"], "phi": 0.51, "shear_rate": 0.002, "normal_stress": 1.0},
+             "friction": {"law": "stribeck", "mu0": 0.4},
+             "fluid": {"lambda": 0.1, "lubrication": "normal", "drag": "stokes"},
+             "run": {"strain": 0.06, "transient_strain": 0.01, "snapshot_interval": 0.0}}
+    whole = dilatant.ShearCell(films)
+    whole.advance(strain=0.03)
+    whole.write_checkpoint(tmp_path / "mid.bin")
+    whole.advance(steps=10**9)
+    resumed = dilatant.ShearCell.resumed(films, tmp_path / "mid.bin")
+    resumed.advance(steps=10**9)
+    assert resumed.steps == whole.steps
+    assert resumed.box_height == whole.box_height != 9.0
+    assert np.array_equal(resumed.positions, whole.positions)
+    assert np.array_equal(resumed.velocities, whole.velocities)
