@@ -100,6 +100,16 @@ void bind_shear_cell(py::module_& m) {
       .def_property_readonly("jammed", [](const ShearCell& c) { return c.state().jam.jammed; })
       .def_property_readonly("wall_velocity",
                              [](const ShearCell& c) { return c.state().drive_speed(); })
+      .def_property_readonly(
+          "box_height",
+          // The box's height Lz (R): under cell.control = "pressure" the lid's,
+          // which follows the normal stress; else cell.size[2] (walls: the
+          // cell's height as configured).
+          [](const ShearCell& c) {
+            const auto& box = c.state().world.box;
+            return box.lees_edwards ? box.length[2] : c.config().cell()->size[2];
+          },
+          "The box's height (code units, R): the lid's under pressure control, else cell.size[2]")
       .def_property_readonly("config", &ShearCell::config)
       .def_property_readonly(
           "positions", [](const ShearCell& c) { return vectors(c.state().world.bodies.position); })

@@ -30,6 +30,11 @@ struct Columns {
   std::optional<std::size_t> status;  // `dilatant sweep`: done | failed | pending
   std::optional<std::size_t> sample;  // `dilatant sweep`: the curve's label
   std::optional<std::size_t> eta;     // checked against shear_stress / gamma_dot
+  // `dilatant sweep`: rate, stress or pressure. A pressure-imposed point has no
+  // fixed phi (it is measured): it belongs to mu(J), phi(J), not to a flow
+  // curve eta(gamma_dot) at fixed phi, and is left out (docs/sweeps.md
+  // "Pressure-imposed sweeps").
+  std::optional<std::size_t> control;
   std::size_t count;
 };
 
@@ -55,7 +60,7 @@ class SweepReader {
                             name));
     return Columns{*find("phi"),   *find("mu0"),    *find("shear_stress"), *find("gamma_dot"),
                    *find("valid"), *find("jammed"), find("gamma_dot_err"), find("status"),
-                   find("sample"), find("eta"),     fields.size()};
+                   find("sample"), find("eta"),     find("control"),       fields.size()};
   }
 
   double number(std::size_t line, const std::vector<std::string>& f, std::size_t column,
@@ -96,6 +101,10 @@ class SweepReader {
     const auto f = split_fields(text, ',');
     check_field_count(name_, line, f.size(), c.count);
     if (c.status && f[*c.status] != "done") return std::nullopt;
+    if (c.control && f[*c.control] == "pressure") {
+      ++pressure_rows_;
+      return std::nullopt;
+    }
     Row r{};
     r.phi = number(line, f, c.phi, "phi");
     if (!(r.phi > 0.0 && r.phi < 0.74))
@@ -132,10 +141,12 @@ class SweepReader {
   }
 
   const DroppedRows& dropped() const { return dropped_; }
+  std::size_t pressure_rows() const { return pressure_rows_; }
 
  private:
   std::string name_;
   DroppedRows dropped_;
+  std::size_t pressure_rows_ = 0;
 };
 
 }  // namespace
@@ -173,6 +184,13 @@ AnalysisInput read_sweep_table(const std::filesystem::path& table) {
     input.curves[it->second].points.push_back(r.point);
   }
   if (rows == 0) reader.fail(1, "no data rows after the header");
+  if (input.curves.empty() && reader.pressure_rows() > 0)
+    reader.fail(
+        1, fmt::format("no flow curve: the {} finished points are pressure-controlled "
+                       "(control = pressure: phi measured, not fixed); plot mu_eff and phi_bulk "
+                       "against viscous_number instead (docs/sweeps.md, \"Pressure-imposed "
+                       "sweeps\")",
+                       reader.pressure_rows()));
   input.note_dropped(name, reader.dropped().count(), reader.dropped().summary());
   if (input.curves.empty())
     reader.fail(1, reader.dropped().count() == 0 ? "no finished point (status done) in the table"

@@ -78,6 +78,9 @@ struct BulkRegion {
 struct StepStress {
   double sigma_zx = 0.0;
   double sigma_zz = 0.0;
+  // -d(-sigma_zz)/dW, the squeeze films' resistance to the pressure-controlled
+  // box's lid (boundary/lid_resistance.hpp); 0 without films.
+  double lid_resistance = 0.0;
 };
 
 class Drive {

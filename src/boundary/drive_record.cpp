@@ -21,7 +21,13 @@ std::unique_ptr<Drive> restore_drive(DriveRecord record, World& world, WallGap g
   // A wall's sphere is driven (the bottom one at rest, the top one by V).
   for (std::size_t i = 0; i < record.owners.size(); ++i)
     if (record.owners[i] != kNoOwner) b.set_driven(i, record.owners[i]);
-  if (world.box.lees_edwards) return std::make_unique<ImageDrive>(record.images);
+  if (world.box.lees_edwards) {
+    // The box's dilation rate is the lid's W / H (image_drive.hpp): the
+    // checkpoint keeps W, the contacts of the next step read W / H.
+    const ImageControl& c = record.images;
+    world.box.dilation_rate = c.pressure_controlled ? c.height_speed / world.box.length[2] : 0.0;
+    return std::make_unique<ImageDrive>(record.images);
+  }
   return std::make_unique<WallDrive>(RoughWalls(std::move(record.wall), CoulombLaw{}), gap);
 }
 

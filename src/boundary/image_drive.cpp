@@ -51,13 +51,20 @@ void ImageDrive::dilate(World& world, double s) const {
 void ImageDrive::respond(World& world, const StepStress& stress, double dt) {
   PeriodicBox& box = world.box;
   if (control_.pressure_controlled) {
-    // M dW/dt = A (p - P), then H -> H + W dt as the dilation s (image_drive.hpp).
-    // A step that would fold the box (s <= 0, only from a state far from the
-    // automatic step's bound) halves it instead: the height stays positive.
-    control_.height_speed +=
-        dt * (-control_.area * stress.sigma_zz - control_.normal_force) / control_.mass;
+    // First the dilation the step's contacts saw (Contact::dilation_drift,
+    // eps_dot = W / H): H -> H + W dt, so that the gaps the solve predicted are
+    // the gaps the bodies end with. A step that would fold the box (s <= 0,
+    // only from a state far from the automatic step's bound) halves it
+    // instead: the height stays positive.
     const double h = box.length[2];
     dilate(world, std::max(0.5, (h + control_.height_speed * dt) / h));
+    // Then M dW/dt = A (p - P), linearly implicit in the films' response
+    // p(W) = p_n - c (W - W_n) (boundary/lid_resistance.hpp):
+    //   W += dt A (p_n - P) / (M + dt A c)     (image_drive.hpp).
+    const double pushed = -control_.area * stress.sigma_zz - control_.normal_force;
+    control_.height_speed +=
+        dt * pushed / (control_.mass + dt * control_.area * stress.lid_resistance);
+    box.dilation_rate = control_.height_speed / box.length[2];
     return;
   }
   if (control_.rate_controlled) {
@@ -92,6 +99,7 @@ bool ImageDrive::adopt(const DriveSpec& spec, World& world) {
   const double w = control_.pressure_controlled ? control_.height_speed : 0.0;
   control_ = control_for(spec, spec.mass > 0.0 ? spec.mass : control_.mass);
   control_.height_speed = spec.pressure_controlled ? w : 0.0;
+  world.box.dilation_rate = control_.height_speed / world.box.length[2];
   if (control_.rate_controlled) world.box.shear_velocity = control_.rate * world.box.length[2];
   return true;
 }

@@ -24,19 +24,32 @@
 //               M dW/dt = A (p - P),   dH/dt = W,   p = -sigma_zz,
 //
 //           the box a lid of mass M pressed down by P A and pushed up by the
-//           normal stress the flow transmits. Between steps (respond), with p
-//           measured over the step just taken (forward Euler for W, then H):
-//           W += dt A (p - P) / M, s = (H + W dt) / H, every z -> s z (an
-//           affine dilation of the box: positions stay inside [0, sH), images
-//           stay images), H -> s H, and V = gamma_dot H again. Velocities are
-//           not rescaled: the dilation rate W / H is small next to the
-//           fluctuations it would add to (a choice; Parrinello & Rahman scale
-//           the peculiar velocities, which changes nothing at first order in
-//           W dt / H). The explicit step is stable while dt^2 A dp/dH / M
-//           stays below 4 (a harmonic oscillator under forward Euler for the
-//           speed and the updated speed for the position, symplectic Euler);
-//           time_step_bound() keeps the lid's displacement per step below the
-//           reach, as for the boundary under stress control.
+//           normal stress the flow transmits. The lid is in the contacts: the
+//           box dilates affinely at eps_dot = W / H (PeriodicBox::
+//           dilation_rate), every body carried along z at eps_dot z besides
+//           its own (peculiar) velocity, so a pair d apart separates at
+//           eps_dot d_z besides (Contact::dilation_drift): the inelastic
+//           contacts and the squeeze films resist the approach a compressing
+//           lid makes, and the gaps the solve predicts are those the bodies
+//           end with. Between steps (respond), with p measured over the step
+//           just taken: first the dilation the step saw, s = (H + W dt) / H,
+//           every z -> s z (positions stay inside [0, sH), images stay
+//           images), H -> s H; then the lid's speed, linearly implicit in the
+//           films' response c = -dp/dW (boundary/lid_resistance.hpp):
+//
+//               W += dt A (p - P) / (M + dt A c),
+//
+//           the implicit Euler step of M dW/dt = A (p(W) - P) with
+//           p(W) = p_n - c (W - W_n). The flow answers the lid with a
+//           damping; an explicit step multiplies the lid's departure from its
+//           terminal speed by 1 - dt A c / M, far below -1 for stiff films
+//           and a light lid (it bounced: docs/shear-cell.md), the implicit one
+//           by 1 - dt A c_true / (M + dt A c), in [0, 1) since the bodies
+//           held fixed make c >= c_true. Then V = gamma_dot H and eps_dot =
+//           W / H. Velocities are not rescaled (Parrinello & Rahman's
+//           peculiar velocities obey a term -2 eps_dot v, of order W dt / H a
+//           step). time_step_bound() keeps the lid's displacement per step
+//           below the reach, as for the boundary under stress control.
 //   stress  V follows the stress the flow transmits, with a fictitious inertia
 //           M: the form of Parrinello & Rahman's coupling of a box degree of
 //           freedom to the stress (J. Appl. Phys. 52, 7182 (1981): a

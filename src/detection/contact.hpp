@@ -22,6 +22,10 @@ struct Contact {
   // x velocity of the partner's image relative to the partner: k V for an
   // image k copies up across a Lees–Edwards boundary (geometry/periodic_box.hpp).
   double image_drift = 0.0;
+  // z velocity of i relative to the partner from the box's affine dilation,
+  // eps_dot d_z with d = x_i - x_partner (PeriodicBox::dilation_rate): the
+  // part of the pair's approach the lid's motion makes (pressure control).
+  double dilation_drift = 0.0;
 
   // Squeeze-film resistance of the pair over the step (fluid/squeeze_film.hpp):
   // its impulse is -lubrication * u_n at the end of the step (0: none).

@@ -140,6 +140,7 @@ void ContactDetector::add_pair_contacts(const World& world, double margin, std::
         c.normal = dist > 0.0 ? Vec3(d / dist) : Vec3::UnitZ();
         c.gap = gap;
         c.image_drift = sheared ? image.image * world.box.shear_velocity : 0.0;
+        c.dilation_drift = world.box.dilation_rate * d[2];
         finish_contact(b, c);
         contacts.push_back(c);
       }

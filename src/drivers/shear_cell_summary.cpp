@@ -167,7 +167,9 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   j["gamma_dot_gap"] = s.jam.jammed ? 0.0 : gdot_gap / u.rate_unit;
   j["profile_consistent"] = profile_consistent;
   j["profile_max_deviation"] = v.mean != 0.0 ? whole.max_deviation / std::abs(v.mean) : 0.0;
-  records.stress.write(j, u.stress_unit);
+  // mu_eff: Boyer et al.'s tau / P under pressure control, else sigma_zx / p
+  // (measure/cell_records.hpp); mu_pressure is sigma_zx / p under every control.
+  records.stress.write(j, u.stress_unit, pressure ? cell.normal_stress : 0.0);
   records.contacts.write(j);
   // s_lim bounds the lubrication picture, so it limits validity only for a law
   // that reads s: the coulomb control has no lubrication to break down.

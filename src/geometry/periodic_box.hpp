@@ -24,6 +24,13 @@ struct PeriodicBox {
   bool lees_edwards = false;    // needs periodic[0] and periodic[2]
   double shear_offset = 0.0;    // x displacement of the copy above, in [0, Lx)
   double shear_velocity = 0.0;  // x velocity of the copy above
+  // The box's affine dilation rate along z, eps_dot = W / Lz, under the
+  // Lees–Edwards pressure control (boundary/image_drive.hpp): the height grows
+  // at W and every body is carried with it, z -> (1 + eps_dot dt) z, besides
+  // its own velocity. Two bodies d apart (d from the partner to the body) then
+  // separate at eps_dot d_z along z beyond their velocities' difference
+  // (Contact::dilation_drift); 0 under every other drive.
+  double dilation_rate = 0.0;
 
   // The nearest image of b seen from a: d = a - b', and which copy along z
   // b' lies in (b' = b + image (offset, 0, Lz) before the x and y wraps), so

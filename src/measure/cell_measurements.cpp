@@ -5,6 +5,7 @@
 #include <tuple>
 #include <utility>
 
+#include "boundary/lid_resistance.hpp"
 #include "boundary/wall_forces.hpp"
 #include "measure/particle_stress.hpp"
 
@@ -81,7 +82,14 @@ StepStress CellMeasurements::accumulate(const StepSample& step,
   // On the walls, or without them the bulk's (Drive::normal_stress).
   a.normal_stress += drive.normal_stress(step.world, f, sigma[tensor_index(kZ, kZ)]) * dt;
   if (steady) profile.add(step.world, dt);
-  return {.sigma_zx = sigma[tensor_index(kZ, kX)], .sigma_zz = sigma[tensor_index(kZ, kZ)]};
+  // The films' resistance to the lid, for the pressure control's update (only
+  // a Lees–Edwards box dilates).
+  const double lid = step.world.box.lees_edwards
+                         ? film_lid_resistance(contacts, volume, step.world.box.length[2], dt)
+                         : 0.0;
+  return {.sigma_zx = sigma[tensor_index(kZ, kX)],
+          .sigma_zz = sigma[tensor_index(kZ, kZ)],
+          .lid_resistance = lid};
 }
 
 void CellMeasurements::close_row(double time, double strain, double phi_bulk) {

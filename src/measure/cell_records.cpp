@@ -31,19 +31,29 @@ StressRecord StressRecord::of(const std::vector<FlowRow>& rows, double from) {
   return s;
 }
 
-void StressRecord::write(nlohmann::json& j, double unit) const {
+void StressRecord::write(nlohmann::json& j, double unit, double imposed_normal) const {
   write_average(j, "shear_stress_measured", shear, unit);
   write_average(j, "pressure", pressure, unit);
   write_average(j, "n1", n1, unit);
   write_average(j, "n2", n2, unit);
   if (pressure.mean > 0.0) {
     const double mu = shear.mean / pressure.mean;
-    j["mu_eff"] = mu;
-    j["mu_eff_err"] = std::abs(mu) * std::hypot(shear.mean != 0.0 ? shear.error / shear.mean : 0.0,
-                                                pressure.error / pressure.mean);
+    j["mu_pressure"] = mu;
+    j["mu_pressure_err"] =
+        std::abs(mu) * std::hypot(shear.mean != 0.0 ? shear.error / shear.mean : 0.0,
+                                  pressure.error / pressure.mean);
   } else {
-    j["mu_eff"] = nullptr;
-    j["mu_eff_err"] = nullptr;
+    j["mu_pressure"] = nullptr;
+    j["mu_pressure_err"] = nullptr;
+  }
+  if (imposed_normal > 0.0) {
+    j["mu_eff"] = shear.mean / imposed_normal;
+    j["mu_eff_err"] = shear.error / imposed_normal;
+    j["mu_eff_definition"] = "shear_stress_measured / normal_stress_imposed";
+  } else {
+    j["mu_eff"] = j["mu_pressure"];
+    j["mu_eff_err"] = j["mu_pressure_err"];
+    j["mu_eff_definition"] = "shear_stress_measured / pressure";
   }
   nlohmann::json rows = nlohmann::json::array();
   for (int a = 0; a < 3; ++a) {

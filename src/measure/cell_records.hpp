@@ -12,13 +12,21 @@
 namespace dilatant {
 
 // The particle stress tensor's steady averages (measure/particle_stress.hpp),
-// code units; written in the paper's (stress `unit`). mu_eff is the ratio of
-// the means, its error propagated from both as if independent.
+// code units; written in the paper's (stress `unit`). Two friction
+// coefficients, each a ratio of means:
+//   mu_pressure = sigma_zx / p, p = -tr(sigma)/3 the measured pressure, its
+//                 error propagated from both as if independent;
+//   mu_eff      = sigma_zx / P with P the normal stress imposed (code units,
+//                 > 0: the pressure-imposed cell), the definition of Boyer,
+//                 Guazzelli & Pouliquen (PRL 107, 188301 (2011): mu = tau / P
+//                 with P the particle pressure the plate imposes), its error
+//                 sigma_zx's alone; without an imposed one (imposed_normal 0)
+//                 it is mu_pressure. mu_eff_definition says which.
 struct StressRecord {
   SteadyAverage shear, pressure, n1, n2;
   Tensor3 tensor{};  // sigma_ab, the mean of each component
   static StressRecord of(const std::vector<FlowRow>& rows, double from);
-  void write(nlohmann::json& summary, double unit) const;
+  void write(nlohmann::json& summary, double unit, double imposed_normal = 0.0) const;
 };
 
 // Contact fractions: boundary lubrication (BL) among closed particle contacts,

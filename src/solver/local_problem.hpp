@@ -18,7 +18,8 @@ inline Vec3 relative_velocity(const Contact& c, const Bodies& b) {
   Vec3 u = b.velocity[c.i] - c.arm_i * b.angular_velocity[c.i].cross(c.normal);
   if (!c.with_plane()) {
     u -= b.velocity[c.other] + c.arm_j * b.angular_velocity[c.other].cross(c.normal);
-    u[0] -= c.image_drift;  // the partner's image across a Lees–Edwards boundary
+    u[0] -= c.image_drift;     // the partner's image across a Lees–Edwards boundary
+    u[2] += c.dilation_drift;  // the box's affine dilation (pressure control)
   }
   return u;
 }

@@ -29,6 +29,13 @@ constexpr std::array kSummaryAfter = {"phi_bulk"sv,
                                       "normal_stress_err"sv,
                                       "inertial_number"sv,
                                       "viscous_number"sv,
+                                      "control"sv,
+                                      "normal_stress_imposed"sv,
+                                      "box_height_mean"sv,
+                                      "box_height_err"sv,
+                                      "box_height_fluctuation"sv,
+                                      "phi_bulk_drift"sv,
+                                      "phi_bulk_drift_err"sv,
                                       "shear_stress_measured"sv,
                                       "shear_stress_measured_err"sv,
                                       "pressure"sv,
@@ -39,6 +46,9 @@ constexpr std::array kSummaryAfter = {"phi_bulk"sv,
                                       "n2_err"sv,
                                       "mu_eff"sv,
                                       "mu_eff_err"sv,
+                                      "mu_pressure"sv,
+                                      "mu_pressure_err"sv,
+                                      "mu_eff_definition"sv,
                                       "frac_impulsive"sv,
                                       "frac_bl_persistent"sv,
                                       "mobile_spheres"sv,
@@ -50,9 +60,13 @@ constexpr std::array kSummaryAfter = {"phi_bulk"sv,
                                       "version"sv};
 // Swept keys that place a point along its curve or name the curve's own columns:
 // a stress ramp sweeps fluid.lambda (or cell.shear_stress), a rate sweep under
-// cell.control = "rate" sweeps cell.shear_rate; neither names another curve.
-constexpr std::array kCurveKeys = {"cell.phi"sv, "friction.mu0"sv, "fluid.lambda"sv,
-                                   "cell.shear_stress"sv, "cell.shear_rate"sv};
+// cell.control = "rate" sweeps cell.shear_rate; under cell.control =
+// "pressure" the viscous number J = eta_f gamma_dot / P moves along mu(J),
+// phi(J) by cell.shear_rate or cell.normal_stress (Boyer, Guazzelli &
+// Pouliquen, PRL 107, 188301 (2011)); none of them names another curve.
+constexpr std::array kCurveKeys = {"cell.phi"sv,        "friction.mu0"sv,
+                                   "fluid.lambda"sv,    "cell.shear_stress"sv,
+                                   "cell.shear_rate"sv, "cell.normal_stress"sv};
 
 std::string field(std::string text) {
   if (text.find_first_of(",\"\n\r") == std::string::npos) return text;

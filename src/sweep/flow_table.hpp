@@ -14,14 +14,22 @@
 //   shear_stress, gamma_dot, gamma_dot_err, eta, eta_err, valid, jammed, frac_bl,
 //   frac_bl_err, frac_hd, frac_over_slim, gamma_dot_bulk, gamma_dot_gap,
 //   profile_consistent, phi_realized, phi_bulk, phi_bulk_err, s_c, friction_law,
-//   normal_stress, normal_stress_err, inertial_number, viscous_number,
+//   normal_stress, normal_stress_err, inertial_number, viscous_number, control,
+//   normal_stress_imposed, box_height_mean, box_height_err,
+//   box_height_fluctuation, phi_bulk_drift, phi_bulk_drift_err (the
+//   pressure-imposed cell's; empty under the other controls),
+//   shear_stress_measured, pressure, n1, n2, mu_eff, mu_pressure (each with
+//   _err), mu_eff_definition (mu_eff is tau / P imposed under pressure
+//   control, else tau / pressure; mu_pressure always the latter),
 //   frac_impulsive, frac_bl_persistent, mobile_spheres, strain, steps,
 //   mean_iterations, frac_steps_unconverged, wall_time_s, version
 //                from the point's summary.json (paper units; docs/shear-cell.md),
 //                empty until the point is done; eta is empty when it jammed;
 //   sample       the flow curve the point belongs to, beside phi: "mu0=0.1", plus
-//                " key=value" for every other swept key but lambda (dilatant
-//                analyze groups rows by phi and sample);
+//                " key=value" for every other swept key but those that place a
+//                point along its curve (cell.phi, fluid.lambda,
+//                cell.shear_stress, cell.shear_rate, cell.normal_stress;
+//                dilatant analyze groups rows by phi and sample);
 //   start        "cold" (a new packing) or the folder of the point it continues from;
 //   dir          the point's run folder, relative to DIR;
 //   jam_cold_start  for a continued point that jammed (sweep.confirm_jams):

@@ -83,6 +83,20 @@ TEST(SweepTable, DropsRowsWithoutAPositiveStressOrRateAndCountsThem) {
                                "value: lines 3, 5)");
 }
 
+// A pressure-imposed point (control = pressure) measures phi instead of
+// fixing it: it is left out of the flow curves at fixed phi; the others stay.
+TEST(SweepTable, LeavesPressureControlledRowsOut) {
+  test::TempDir dir;
+  const auto file = dir.write("flowcurves.csv",
+                              "phi,mu0,shear_stress,gamma_dot,valid,jammed,control\n"
+                              "0.5,0.1,1,1,true,false,rate\n0.5,0.1,2,1,true,false,pressure\n"
+                              "0.5,0.1,4,3,true,false,stress\n0.5,0.1,8,1,true,false,pressure\n");
+  const AnalysisInput in = read_sweep_table(file);
+  ASSERT_EQ(in.curves.size(), 1u);
+  EXPECT_EQ(in.curves[0].points.size(), 2u);
+  EXPECT_EQ(in.dropped_rows, 0u);
+}
+
 struct BadSweep {
   std::string name;
   std::string text;
@@ -108,6 +122,10 @@ std::vector<BadSweep> bad_sweeps() {
        "repeats line 2"},
       {"WrongFieldCount", h + "0.5,0.1,1,1,0,1,true\n", 2, "7 fields, the header has 8"},
       {"PhiOutOfRange", h + "0.8,0.1,1,1,0,1,true,false\n", 2, "must be in (0, 0.74)"},
+      {"OnlyPressureControlled",
+       "phi,mu0,shear_stress,gamma_dot,valid,jammed,control\n0.58,0.4,0.3,0.1,true,false,"
+       "pressure\n0.58,0.4,0.5,0.1,true,false,pressure\n",
+       1, "no flow curve: the 2 finished points are pressure-controlled"},
       {"NaN", h + "0.5,0.1,nan,1,0,1,true,false\n", 1, "missing value: line 2"},
       {"Infinite", h + "0.5,0.1,inf,1,0,1,true,false\n", 2, "not a finite number"},
       // eta 2.50 where shear_stress / gamma_dot = 2.00: 25%, its digits allow 1.6%.

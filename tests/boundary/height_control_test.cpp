@@ -37,9 +37,11 @@ World box_with_spheres(double rate) {
   return w;
 }
 
-// One response: W = dt A (p - P) / M from rest, then every z and Lz scaled by
-// s = (H + W dt) / H; x, y, the velocities and the images' offset unchanged,
-// V = gamma_dot H of the new height.
+// One response from rest: the step saw W = 0, so nothing dilates; the lid
+// takes W = dt A (p - P) / M (no films: c = 0) and the box's dilation rate
+// W / H for the next step's contacts. The next response dilates by the W that
+// step saw: every z and Lz scaled by s = (H + W dt) / H; x, y, the velocities
+// and the images' offset unchanged, V = gamma_dot H of the new height.
 TEST(HeightControl, MovesTheHeightByTheStressImbalanceAndDilatesZ) {
   const double rate = 0.25, p_imposed = 2.0, mass = 10.0, dt = 0.01;
   World w = box_with_spheres(rate);
@@ -50,9 +52,15 @@ TEST(HeightControl, MovesTheHeightByTheStressImbalanceAndDilatesZ) {
   drive.respond(w, {.sigma_zx = 0.7, .sigma_zz = -p_measured}, dt);
   const double speed = dt * kArea * (p_measured - p_imposed) / mass;
   EXPECT_DOUBLE_EQ(drive.control().height_speed, speed);
+  EXPECT_EQ(w.box.length[2], kLz);
+  EXPECT_EQ(w.bodies.position, before.bodies.position);
+  EXPECT_DOUBLE_EQ(w.box.dilation_rate, speed / kLz);
+  drive.respond(w, {.sigma_zx = 0.7, .sigma_zz = -p_imposed}, dt);  // balanced: W stays
+  EXPECT_DOUBLE_EQ(drive.control().height_speed, speed);
   const double s = (kLz + speed * dt) / kLz;
   EXPECT_GT(s, 1.0);
   EXPECT_DOUBLE_EQ(w.box.length[2], kLz * s);
+  EXPECT_DOUBLE_EQ(w.box.dilation_rate, speed / (kLz * s));
   for (std::size_t i = 0; i < w.bodies.size(); ++i) {
     EXPECT_DOUBLE_EQ(w.bodies.position[i][2], before.bodies.position[i][2] * s);
     EXPECT_EQ(w.bodies.position[i][0], before.bodies.position[i][0]);
@@ -68,6 +76,22 @@ TEST(HeightControl, MovesTheHeightByTheStressImbalanceAndDilatesZ) {
   for (int n = 0; n < 5; ++n) drive.respond(w, {.sigma_zz = -1.0}, dt);
   EXPECT_LT(drive.control().height_speed, 0.0);
   EXPECT_LT(w.box.length[2], before.box.length[2] * s);
+}
+
+// With squeeze films the lid's speed is linearly implicit in their
+// resistance c = -dp/dW (boundary/lid_resistance.hpp): W = dt A (p - P) /
+// (M + dt A c). A stiff film (dt A c = 1000 M) makes it the overdamped
+// piston's terminal speed (p - P) / c to 0.1%, where the explicit step would
+// overshoot it a thousandfold.
+TEST(HeightControl, TakesTheFilmsResistanceImplicitly) {
+  const double p_imposed = 2.0, mass = 10.0, dt = 0.01, p_measured = 3.0;
+  const double c = 1000.0 * mass / (dt * kArea);
+  World w = box_with_spheres(0.25);
+  ImageDrive drive(ImageDrive::control_for(pressure_spec(0.25, p_imposed), mass));
+  drive.respond(w, {.sigma_zz = -p_measured, .lid_resistance = c}, dt);
+  const double speed = drive.control().height_speed;
+  EXPECT_DOUBLE_EQ(speed, dt * kArea * (p_measured - p_imposed) / (mass + dt * kArea * c));
+  EXPECT_NEAR(speed, (p_measured - p_imposed) / c, 1e-3 * (p_measured - p_imposed) / c);
 }
 
 // Images stay images: after a dilation the separation of two bodies across the
@@ -121,12 +145,14 @@ TEST(HeightControl, BoundsTheStepByTheLidsDisplacement) {
 TEST(HeightControl, ContinuesFromAnyHeight) {
   World w = box_with_spheres(0.25);
   ImageDrive drive(ImageDrive::control_for(pressure_spec(0.25, 2.0), 4.0));
-  drive.respond(w, {.sigma_zz = -3.0}, 0.01);
+  drive.respond(w, {.sigma_zz = -3.0}, 0.01);  // W from rest
+  drive.respond(w, {.sigma_zz = -3.0}, 0.01);  // H moves by the W of the first
   const double h = w.box.length[2], speed = drive.control().height_speed;
   ASSERT_NE(h, kLz);
   ASSERT_TRUE(drive.adopt(pressure_spec(0.5, 1.0), w));
   EXPECT_EQ(w.box.length[2], h);
   EXPECT_EQ(drive.control().height_speed, speed);
+  EXPECT_DOUBLE_EQ(w.box.dilation_rate, speed / h);
   EXPECT_DOUBLE_EQ(w.box.shear_velocity, 0.5 * h);
   EXPECT_EQ(drive.control().normal_force, 1.0 * kArea);
   DriveSpec rate = pressure_spec(0.5, 0.0);
@@ -142,7 +168,10 @@ TEST(HeightControl, ComesBackFromItsRecord) {
   drive.respond(w, {.sigma_zz = -3.0}, 0.01);
   const DriveRecord record = drive.record(w);
   EXPECT_EQ(record.fault(w.box, w.bodies.size()), nullptr);
+  w.box.dilation_rate = 0.0;  // a checkpoint keeps W, not the box's W / H
   const auto back = restore_drive(record, w, {});
+  EXPECT_DOUBLE_EQ(w.box.dilation_rate, drive.control().height_speed / w.box.length[2]);
+  EXPECT_NE(w.box.dilation_rate, 0.0);
   const auto* images = dynamic_cast<const ImageDrive*>(back.get());
   ASSERT_NE(images, nullptr);
   EXPECT_TRUE(images->control().pressure_controlled);

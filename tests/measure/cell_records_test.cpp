@@ -78,9 +78,31 @@ TEST(StressRecord, FrictionCoefficientIsTheRatioOfTheMeans) {
   EXPECT_NEAR(j["mu_eff"].get<double>(), 0.3, 1e-12);
   EXPECT_NEAR(j["pressure"].get<double>(), 2.0, 1e-12);  // 1 / 0.5
   EXPECT_NEAR(j["stress_tensor"][2][0].get<double>(), 0.6, 1e-12);
+  EXPECT_NEAR(j["mu_pressure"].get<double>(), 0.3, 1e-12);
+  EXPECT_EQ(j["mu_eff_definition"], "shear_stress_measured / pressure");
   nlohmann::json none;
   StressRecord::of(rows_of(20), 0.0).write(none, 1.0);
   EXPECT_TRUE(none["mu_eff"].is_null());
+  EXPECT_TRUE(none["mu_pressure"].is_null());
+}
+
+// Under an imposed normal stress P (the pressure-imposed cell) mu_eff is
+// Boyer, Guazzelli & Pouliquen's tau / P, the imposed P exact, so its error is
+// sigma_zx's over P; mu_pressure keeps sigma_zx / p.
+TEST(StressRecord, UnderAnImposedNormalStressMuEffIsShearOverTheImposedOne) {
+  auto rows = rows_of(20);
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    rows[k].stress[tensor_index(kZ, kX)] = k % 2 ? 0.25 : 0.35;             // mean 0.3
+    for (int a = 0; a < 3; ++a) rows[k].stress[tensor_index(a, a)] = -1.0;  // p = 1
+  }
+  nlohmann::json j;
+  const StressRecord record = StressRecord::of(rows, 0.0);
+  record.write(j, 1.0, 0.6);
+  EXPECT_NEAR(j["mu_eff"].get<double>(), 0.5, 1e-12);
+  EXPECT_NEAR(j["mu_eff_err"].get<double>(), record.shear.error / 0.6, 1e-15);
+  EXPECT_GT(j["mu_eff_err"].get<double>(), 0.0);
+  EXPECT_NEAR(j["mu_pressure"].get<double>(), 0.3, 1e-12);
+  EXPECT_EQ(j["mu_eff_definition"], "shear_stress_measured / normal_stress_imposed");
 }
 
 // Dissipations are reported positive; the wall forces are null without walls.

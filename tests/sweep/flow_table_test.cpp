@@ -115,6 +115,56 @@ TEST(FlowTable, ASweptShearRateIsACurvesAxisNotItsSample) {
   EXPECT_EQ(sample_label(plan, plan.points[2]), "mu0=0.1");
 }
 
+// A sweep of the pressure-imposed cell (cell.control = "pressure") moves J =
+// eta_f gamma_dot / P by cell.normal_stress or cell.shear_rate: neither names
+// a curve, and each row carries what mu(J) and phi(J) need (Boyer, Guazzelli
+// & Pouliquen, PRL 107, 188301 (2011)): the imposed and measured normal
+// stress, phi_bulk, mu_eff, J and I, and the lid's height.
+TEST(FlowTable, APressureSweepsRowsCarryTheImposedStressAndTheMeasuredPhiAndMu) {
+  const SweepPlan plan = parse_sweep(
+      "[cell]\nsize = [6.0, 5.0, 7.0]\nphi = 0.55\nboundary = \"lees-edwards\"\n"
+      "control = \"pressure\"\nshear_rate = [0.01, 0.1]\nnormal_stress = [1.0, 4.0]\n"
+      "[friction]\nmu0 = 0.4\n",
+      "s.toml", ".", {});
+  ASSERT_EQ(plan.points.size(), 4u);
+  for (const auto& p : plan.points) EXPECT_EQ(sample_label(plan, p), "mu0=0.4");
+  nlohmann::json done = summary(1.0, false);
+  done["control"] = "pressure";
+  done["normal_stress_imposed"] = 4.0;
+  done["normal_stress"] = 3.9;
+  done["phi_bulk"] = 0.571;
+  done["mu_eff"] = 0.42;
+  done["viscous_number"] = 0.025;
+  done["inertial_number"] = 0.05;
+  done["box_height_mean"] = 7.2;
+  done["box_height_fluctuation"] = 0.01;
+  std::vector<PointRecord> records(4);
+  records[1] = {PointStatus::Done, "", done, {}};
+  const auto rows = lines(flowcurves_csv(plan, records));
+  const auto header = analysis::split_fields(rows[0], ',');
+  EXPECT_EQ(header[0], "cell.shear_rate");
+  EXPECT_EQ(header[1], "cell.normal_stress");
+  const auto fields = analysis::split_fields(rows[2], ',');
+  ASSERT_EQ(fields.size(), header.size());
+  const auto column = [&](const std::string& name) {
+    const auto at = std::find(header.begin(), header.end(), name);
+    EXPECT_NE(at, header.end()) << name;
+    return at == header.end() ? std::string("?")
+                              : fields[static_cast<std::size_t>(at - header.begin())];
+  };
+  EXPECT_EQ(column("cell.normal_stress"), "4.0");
+  EXPECT_EQ(column("control"), "pressure");
+  EXPECT_EQ(column("normal_stress_imposed"), "4");
+  EXPECT_EQ(column("normal_stress"), "3.9");
+  EXPECT_EQ(column("phi_bulk"), "0.571");
+  EXPECT_EQ(column("mu_eff"), "0.42");
+  EXPECT_EQ(column("viscous_number"), "0.025");
+  EXPECT_EQ(column("inertial_number"), "0.05");
+  EXPECT_EQ(column("box_height_mean"), "7.2");
+  EXPECT_EQ(column("box_height_fluctuation"), "0.01");
+  EXPECT_EQ(column("sample"), "mu0=0.4");
+}
+
 TEST(FlowTable, AnalyzeReadsDoneRowsOnlyAndGroupsCurvesByPhiAndSample) {
   test::TempDir dir;
   const SweepPlan plan =

@@ -15,7 +15,9 @@ Writes PNG and SVG into DIR/plots/ (no fitting here: the numbers come from C++):
                       first), each point labelled with its shear stress (Fig. 1b);
   fig1c_sommerfeld.*  P(s) of the contacts at each stress of that curve, with the
                       friction law mu(s) drawn over it (Fig. 1c);
-  fig1d_contacts.*    P_BL and P_HD = 1 - P_BL vs gamma_dot for that curve (Fig. 1d).
+  fig1d_contacts.*    P_BL and P_HD = 1 - P_BL vs gamma_dot for that curve (Fig. 1d);
+  mu_phi_of_J.*       under cell.control = "pressure": mu_eff and phi_bulk vs J
+                      (pressure_sweep.py); those points are in no flow curve.
 
 Every point outside the model's validity (valid: false) is drawn hollow and grey
 and labelled so, never as a result; a jammed point (the wall stopped: gamma_dot 0,
@@ -34,11 +36,13 @@ from pathlib import Path
 
 if __package__:
     from .common import RATE, VISCOSITY, NothingToPlot, exit_missing, number, read_rows, save
+    from .pressure_sweep import is_pressure, mu_phi_figure
 else:  # a script (the CLI: python3 sweep.py DIR): common.py lies beside it, a folder
     # not on the path under python3 -P or PYTHONSAFEPATH. Without matplotlib it exits 3.
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     from common import (RATE, VISCOSITY, NothingToPlot, exit_missing, number,  # noqa
                         read_rows, save)
+    from pressure_sweep import is_pressure, mu_phi_figure  # noqa
 
 try:
     import tomllib
@@ -100,6 +104,8 @@ def load_curves(out):
     rows = [r for r in read_rows(out / "flowcurves.csv") if r["status"] == "done"]
     groups = {}
     for r in rows:
+        if is_pressure(r):  # phi measured, not fixed: mu(J), phi(J) instead
+            continue
         groups.setdefault((number(r["phi"]), r["sample"]), []).append(r)
     curves = [Curve(phi, sample, rs) for (phi, sample), rs in groups.items()]
     curves.sort(key=lambda c: (c.mu0, c.sample, c.phi))
@@ -374,7 +380,11 @@ def draw(out):
     header = next(csv.reader(open(out / "flowcurves.csv", newline="")))
     swept = header[:header.index("point")]
     rows, curves = load_curves(out)
+    # Pressure-imposed points (docs/sweeps.md "Pressure-imposed sweeps"): mu(J), phi(J).
+    pressure = rows and mu_phi_figure(rows, settings_caption(out, rows, swept), caption, save, out)
     if not curves:
+        if pressure:
+            return
         raise NothingToPlot("no finished point to plot")
     flow_curves_figure(out, rows, curves, swept)
     curve = chosen_curve(curves)
