@@ -20,7 +20,7 @@ fi
 # Two studies: the onset where the flow is viscous (the Wyart-Cates model's
 # regime), where it is inertial, and the viscous one as stress ramps (the
 # contrasts).
-for study in viscous inertial stress-ramp; do
+for study in viscous viscous-mu1 inertial stress-ramp; do
   "$bin" sweep "examples/laws/critical-load-$study.toml" --out "$out/$study" \
     --set "sweep.jobs=${DILATANT_LAWS_JOBS:-0}"
   # A fit that finds nothing to fit exits 2; the tables of the analysis stay.
