@@ -50,6 +50,22 @@ double number_or_nan(const Json& j, const std::string& key) {
   return j.contains(key) && j[key].is_number() ? j[key].get<double>() : kUnknownError;
 }
 
+// A fit of one suspension's seeds (wyart_cates_seeds.hpp) holds the seeds'
+// fits and their pooled one: the pooled one answers unless a sample is chosen.
+// Empty when the fitted samples are anything else.
+std::string the_pooled_sample(const Json& j, const std::vector<std::string>& fitted) {
+  for (const std::string& name : fitted) {
+    const Json& s = j["samples"][name];
+    if (!s.contains("seeds") || !s["seeds"].contains("members")) continue;
+    const Json& members = s["seeds"]["members"];
+    const bool all_members = std::all_of(fitted.begin(), fitted.end(), [&](const std::string& f) {
+      return f == name || std::find(members.begin(), members.end(), f) != members.end();
+    });
+    if (all_members) return name;
+  }
+  return {};
+}
+
 }  // namespace
 
 std::vector<std::string> fitted_wyart_cates_samples(const std::filesystem::path& file) {
@@ -66,6 +82,7 @@ FittedWyartCates read_fitted_wyart_cates(const std::filesystem::path& file,
   const Json j = read_model_file(file);
   const std::vector<std::string> fitted = fitted_wyart_cates_samples(file);
   std::string name = sample;
+  if (name.empty()) name = the_pooled_sample(j, fitted);
   if (name.empty()) {
     if (fitted.size() != 1)
       throw InputError(

@@ -29,9 +29,10 @@ struct FittedWyartCates {
 // file is not one (named with the file and what is wrong).
 std::vector<std::string> fitted_wyart_cates_samples(const std::filesystem::path& file);
 
-// `sample` empty: the file's only fitted sample; InputError when there are
-// several (naming them, and the option to choose: `sample_option`), when the
-// sample is not in the file or has no fit.
+// `sample` empty: the file's only fitted sample, or the pooled fit of a file
+// that holds one suspension's seeds and their pooled fit (wyart_cates_seeds.hpp);
+// InputError when there are several others (naming them, and the option to choose:
+// `sample_option`), when the sample is not in the file or has no fit.
 FittedWyartCates read_fitted_wyart_cates(const std::filesystem::path& file,
                                          const std::string& sample,
                                          const std::string& sample_option = "--sample");

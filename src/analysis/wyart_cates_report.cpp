@@ -77,9 +77,24 @@ void put_exponent(Json& j, const char* name, const Estimate& e, const WyartCates
   j[std::string(name) + "_source"] = fitted ? "fitted" : "fixed";
 }
 
+Json seeds_json(const WyartCatesSample& s) {
+  Json j;
+  j["members"] = s.members;
+  j["note"] =
+      "each member fitted alone (its own entry in samples); mean, sd (n - 1) and sem = "
+      "sd/sqrt(n) over those with a fit (phi_dst: those with a DST boundary)";
+  Json spread = Json::object();
+  for (const SeedSpread& q : s.seed_spreads)
+    spread[q.name] = {
+        {"n", q.n}, {"mean", or_null(q.mean)}, {"sd", or_null(q.sd)}, {"sem", or_null(q.sem)}};
+  j["spread"] = spread;
+  return j;
+}
+
 Json wyart_cates_sample_json(const WyartCatesSample& s) {
   Json j;
   j["curves"] = s.curves;
+  if (!s.members.empty()) j["seeds"] = seeds_json(s);
   if (!s.outcome.fit) {
     j["fitted"] = false;
     j["fit_note"] = s.outcome.why_not;
@@ -128,7 +143,52 @@ Json wyart_cates_sample_json(const WyartCatesSample& s) {
   return j;
 }
 
+WyartCatesSample fitted_sample(std::string name, const std::vector<FlowCurve>& curves,
+                               const WyartCatesSettings& settings) {
+  WyartCatesSample s;
+  s.sample = std::move(name);
+  s.curves = curves.size();
+  s.outcome = fit_wyart_cates(curves, settings);
+  s.onset = {kNoOnset, kNoOnset};
+  s.onset_phi_err = kNoOnset;
+  if (s.outcome.fit) {
+    s.onset = dst_onset(s.outcome.fit->model());
+    s.onset_phi_err = onset_phi_error(*s.outcome.fit);
+  }
+  return s;
+}
+
+// The scatter of the seeds' own fits: each parameter the fit varied, and phi_DST.
+std::vector<SeedSpread> spreads_over(const std::vector<const WyartCatesSample*>& seeds,
+                                     const WyartCatesSettings& settings) {
+  std::vector<std::pair<const char*, double (*)(const WyartCatesSample&)>> quantities = {
+      {"phi_0", [](const WyartCatesSample& s) { return s.outcome.fit->phi_0.value; }},
+      {"phi_m", [](const WyartCatesSample& s) { return s.outcome.fit->phi_m.value; }},
+      {"sigma_star", [](const WyartCatesSample& s) { return s.outcome.fit->sigma_star.value; }},
+      {"A", [](const WyartCatesSample& s) { return s.outcome.fit->A.value; }}};
+  if (settings.fit_alpha)
+    quantities.push_back(
+        {"alpha", [](const WyartCatesSample& s) { return s.outcome.fit->alpha.value; }});
+  if (settings.fit_beta)
+    quantities.push_back(
+        {"beta", [](const WyartCatesSample& s) { return s.outcome.fit->beta.value; }});
+  quantities.push_back({"phi_dst", [](const WyartCatesSample& s) { return s.onset.phi; }});
+  std::vector<SeedSpread> out;
+  for (const auto& [name, value] : quantities) {
+    std::vector<double> values;
+    for (const WyartCatesSample* s : seeds)
+      if (s->outcome.fit && std::isfinite(value(*s))) values.push_back(value(*s));
+    out.push_back(seed_spread(name, values));
+  }
+  return out;
+}
+
 }  // namespace
+
+bool WyartCatesSample::holds(const std::string& curve_sample) const {
+  if (members.empty()) return curve_sample == sample;
+  return std::find(members.begin(), members.end(), curve_sample) != members.end();
+}
 
 bool WyartCatesReport::any_fit() const {
   for (const auto& s : samples)
@@ -147,20 +207,26 @@ WyartCatesReport wyart_cates_report(const AnalysisInput& input,
   std::stable_sort(r.curves.begin(), r.curves.end(),
                    [](const FlowCurve& a, const FlowCurve& b) { return a.phi < b.phi; });
   for (const std::string& name : input.samples) {
-    WyartCatesSample s;
-    s.sample = name;
     std::vector<FlowCurve> mine;
     for (const FlowCurve& c : input.curves)
       if (c.sample == name) mine.push_back(c);
-    s.curves = mine.size();
-    s.outcome = fit_wyart_cates(mine, settings);
-    s.onset = {kNoOnset, kNoOnset};
-    s.onset_phi_err = kNoOnset;
-    if (s.outcome.fit) {
-      s.onset = dst_onset(s.outcome.fit->model());
-      s.onset_phi_err = onset_phi_error(*s.outcome.fit);
-    }
-    r.samples.push_back(std::move(s));
+    r.samples.push_back(fitted_sample(name, mine, settings));
+  }
+  for (const SeedGroup& g : seed_groups(input.samples)) {
+    std::vector<FlowCurve> mine;
+    for (const FlowCurve& c : input.curves)
+      if (std::find(g.members.begin(), g.members.end(), c.sample) != g.members.end())
+        mine.push_back(c);
+    const bool taken =
+        std::find(input.samples.begin(), input.samples.end(), g.label) != input.samples.end();
+    WyartCatesSample pooled =
+        fitted_sample(taken ? g.label + " (seeds pooled)" : g.label, mine, settings);
+    pooled.members = g.members;
+    std::vector<const WyartCatesSample*> seeds;
+    for (const auto& s : r.samples)
+      if (pooled.holds(s.sample)) seeds.push_back(&s);
+    pooled.seed_spreads = spreads_over(seeds, settings);
+    r.samples.push_back(std::move(pooled));
   }
   return r;
 }
@@ -190,13 +256,15 @@ std::string wyart_cates_json(const WyartCatesReport& r) {
 std::string wyart_cates_curves_csv(const WyartCatesReport& r) {
   std::string out = "sample,phi,kind,shear_stress,shear_rate,viscosity,fitted\n";
   for (const auto& s : r.samples) {
+    std::vector<double> drawn;  // a pooled sample's model line once per phi
     for (const FlowCurve& c : r.curves) {
-      if (c.sample != s.sample) continue;
+      if (!s.holds(c.sample)) continue;
       for (const FlowPoint& p : c.points)
-        out += fmt::format("{},{},data,{},{},{},{}\n", c.sample, csv_cell(c.phi),
+        out += fmt::format("{},{},data,{},{},{},{}\n", s.sample, csv_cell(c.phi),
                            csv_cell(p.shear_stress), csv_cell(p.shear_rate), csv_cell(p.viscosity),
                            wyart_cates_fits_point(p));
-      if (!s.outcome.fit) continue;
+      if (!s.outcome.fit || std::find(drawn.begin(), drawn.end(), c.phi) != drawn.end()) continue;
+      drawn.push_back(c.phi);
       const WyartCatesFit& f = *s.outcome.fit;
       const WyartCatesParameters m = f.model();
       const double lo = f.stress_low / kOverlayMargin, hi = f.stress_high * kOverlayMargin;
@@ -204,7 +272,7 @@ std::string wyart_cates_curves_csv(const WyartCatesReport& r) {
         const double sigma = lo * std::pow(hi / lo, k / (kOverlayNodes - 1.0));
         const double eta = wyart_cates_viscosity(m, c.phi, sigma);
         if (!std::isfinite(eta)) break;  // jammed: the model curve ends
-        out += fmt::format("{},{},model,{},{},{},false\n", c.sample, csv_cell(c.phi),
+        out += fmt::format("{},{},model,{},{},{},false\n", s.sample, csv_cell(c.phi),
                            csv_cell(sigma), csv_cell(sigma / eta), csv_cell(eta));
       }
     }

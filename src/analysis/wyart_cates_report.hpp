@@ -16,6 +16,12 @@
 //     the flow-state map the fit implies, phi from below phi_DST to phi_0
 //     (empty: no such stress), what the map plot draws.
 //
+// Samples that differ only by their seed (a sweep over cell.seed;
+// wyart_cates_seeds.hpp) are fitted one by one and then pooled: one more
+// sample, labelled without the seed, fitted on all their curves, whose JSON
+// entry has a `seeds` block (members, and the mean, sd and standard error of
+// each parameter and of phi_DST over the per-seed fits).
+//
 // The `dst` block and the map are in the data's stress units.
 #include <filesystem>
 #include <string>
@@ -23,6 +29,7 @@
 
 #include "analysis/analysis_input.hpp"
 #include "analysis/wyart_cates_fit.hpp"
+#include "analysis/wyart_cates_seeds.hpp"
 
 namespace dilatant::analysis {
 
@@ -32,6 +39,13 @@ struct WyartCatesSample {
   WyartCatesOutcome outcome;
   DstOnset onset;              // of the fitted model; NaN without a fit
   double onset_phi_err = 0.0;  // phi_DST's standard error
+  // A pooled sample: the samples of its seeds, and the scatter of their own
+  // fits (empty for a sample of the input).
+  std::vector<std::string> members;
+  std::vector<SeedSpread> seed_spreads;
+
+  // Whether a curve labelled `curve_sample` is one of this sample's.
+  bool holds(const std::string& curve_sample) const;
 };
 
 struct WyartCatesReport {
@@ -45,7 +59,8 @@ struct WyartCatesReport {
   bool any_fit() const;
 };
 
-// Fits each sample of `input`, in the input's order of samples.
+// Fits each sample of `input`, in the input's order of samples, then each
+// group of seeds pooled (after them, in the order of their first member).
 WyartCatesReport wyart_cates_report(const AnalysisInput& input, const WyartCatesSettings& settings);
 
 std::string wyart_cates_json(const WyartCatesReport& report);

@@ -153,6 +153,14 @@ void print_model_summary(const analysis::WyartCatesReport& r) {
         s.sample, with_error(f->phi_0, "{:.4f}"), with_error(f->phi_m, "{:.4f}"),
         with_error(f->sigma_star, "{:.4g}"), with_error(f->A, "{:.4g}"), exponents,
         f->chi2_per_dof(), with_error({s.onset.phi, s.onset_phi_err}, "{:.4f}"));
+    if (s.members.empty()) continue;
+    std::string spread;
+    for (const auto& q : s.seed_spreads)
+      spread += fmt::format("{}{} {}", spread.empty() ? "" : ", ", q.name,
+                            with_error({q.mean, q.sem}, "{:.4g}"));
+    std::cout << fmt::format(
+        "      the {} seeds pooled; their own fits (mean +- standard error): {}\n",
+        s.members.size(), spread);
   }
 }
 

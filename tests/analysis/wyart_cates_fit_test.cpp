@@ -13,8 +13,12 @@
 #include <string>
 #include <vector>
 
+#include "analysis/wyart_cates_curves.hpp"
+
 namespace dilatant::analysis::wyart_cates_fit_test {
 namespace {
+
+using test::curves;
 
 // Singh et al. (2018)'s mu = 1 fractions; sigma* and A in arbitrary units.
 const WyartCatesParameters kTruth{0.64, 0.56, 2.0, 1.3, 2.0, 1.0};
@@ -22,37 +26,6 @@ const WyartCatesParameters kTruth{0.64, 0.56, 2.0, 1.3, 2.0, 1.0};
 // and one above it, which jams above its shear-jamming stress.
 const std::vector<double> kPhis = {0.45, 0.50, 0.53, 0.55, 0.575};
 constexpr double kNoise = 0.05;  // relative scatter of the viscosity
-
-// A stress ramp from 0.01 to 100 sigma*, 6 points a decade; points beyond
-// phi_J are jammed (rate 0, no viscosity), as the sweep table gives them.
-std::vector<FlowCurve> curves(const WyartCatesParameters& p, const std::vector<double>& phis,
-                              double noise, unsigned seed, double low = 0.01, double high = 100.0) {
-  std::mt19937_64 rng(seed);
-  std::normal_distribution<double> normal(0.0, 1.0);
-  std::vector<FlowCurve> out;
-  const int n = static_cast<int>(std::lround(6.0 * std::log10(high / low)));
-  for (const double phi : phis) {
-    // Strings constructed, not assigned: GCC 12 at -O3 reports a false
-    // -Wstringop-overflow on assigning a literal here (GCC bug 105329).
-    FlowCurve c{
-        std::string("synthetic"), std::string(), std::string("S"), phi, std::nullopt, {}, 0};
-    for (int k = 0; k <= n; ++k) {
-      FlowPoint pt;
-      pt.shear_stress = p.sigma_star * low * std::pow(high / low, k / static_cast<double>(n));
-      const double eta = wyart_cates_viscosity(p, phi, pt.shear_stress);
-      if (std::isfinite(eta)) {
-        pt.viscosity = eta * std::exp(noise * normal(rng));
-        pt.shear_rate = pt.shear_stress / pt.viscosity;
-      } else {
-        pt.jammed = true;
-        pt.viscosity = std::nan("");
-      }
-      c.points.push_back(pt);
-    }
-    out.push_back(c);
-  }
-  return out;
-}
 
 void expect_within(const Estimate& e, double truth, double sigmas, const char* name) {
   ASSERT_TRUE(std::isfinite(e.err) && e.err > 0) << name;

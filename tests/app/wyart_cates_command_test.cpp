@@ -27,23 +27,29 @@ const analysis::WyartCatesParameters kTruth{0.64, 0.56, 2.0, 1.3, 2.0, 1.0};
 
 // A sweep table (the columns `dilatant sweep` writes that the analysis reads):
 // phi at each of `phis`, 0.02 to 200 in stress, 5% log-normal noise on the rate.
-fs::path write_sweep(const fs::path& dir, const std::vector<double>& phis) {
+// With `seeds` > 0, that many packings of each point, labelled in a `sample`
+// column as a sweep over cell.seed labels them ("mu0=1 seed=2").
+fs::path write_sweep(const fs::path& dir, const std::vector<double>& phis, int seeds = 0) {
   std::mt19937_64 rng(11);
   std::normal_distribution<double> normal(0.0, 1.0);
   const fs::path file = dir / "flowcurves.csv";
   std::ofstream out(file);
-  out << "phi,mu0,shear_stress,gamma_dot,gamma_dot_err,valid,jammed\n";
-  for (const double phi : phis)
-    for (int k = 0; k <= 24; ++k) {
-      const double sigma = 0.02 * std::pow(10.0, k / 6.0);
-      const double eta = analysis::wyart_cates_viscosity(kTruth, phi, sigma);
-      if (!std::isfinite(eta)) {
-        out << phi << ",1," << sigma << ",0,,true,true\n";
-        continue;
+  out << "phi,mu0,shear_stress,gamma_dot,gamma_dot_err,valid,jammed"
+      << (seeds > 0 ? ",sample\n" : "\n");
+  for (int seed = 1; seed <= std::max(seeds, 1); ++seed)
+    for (const double phi : phis)
+      for (int k = 0; k <= 24; ++k) {
+        const std::string sample = seeds > 0 ? ",mu0=1 seed=" + std::to_string(seed) : "";
+        const double sigma = 0.02 * std::pow(10.0, k / 6.0);
+        const double eta = analysis::wyart_cates_viscosity(kTruth, phi, sigma);
+        if (!std::isfinite(eta)) {
+          out << phi << ",1," << sigma << ",0,,true,true" << sample << "\n";
+          continue;
+        }
+        const double rate = sigma / eta * std::exp(0.05 * normal(rng));
+        out << phi << ",1," << sigma << "," << rate << "," << 0.05 * rate << ",true,false" << sample
+            << "\n";
       }
-      const double rate = sigma / eta * std::exp(0.05 * normal(rng));
-      out << phi << ",1," << sigma << "," << rate << "," << 0.05 * rate << ",true,false\n";
-    }
   return file;
 }
 
@@ -97,6 +103,32 @@ TEST(WyartCatesCommand, AnalyzeFitsWritesTheFilesAndPredictAnswersFromThem) {
   ASSERT_EQ(again.exit_code, 0) << again.err;
   EXPECT_FALSE(fs::exists(out / "wyart_cates.json"));
   EXPECT_FALSE(fs::exists(out / "wyart_cates.png"));
+}
+
+TEST(WyartCatesCommand, SeedsAreFittedAlonePooledAndPredictAnswersFromThePool) {
+  test::CliDir dir;
+  const fs::path input = write_sweep(dir.path(), {0.45, 0.50, 0.53, 0.55, 0.575}, 3);
+  const fs::path out = dir.path() / "out";
+  const auto r = dir.run(
+      {"analyze", input.string(), "--out", out.string(), "--model", "wyart-cates", "--no-plots"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("the 3 seeds pooled; their own fits (mean +- standard error): phi_0"),
+            std::string::npos)
+      << r.out;
+  const auto j = nlohmann::json::parse(read_text(out / "wyart_cates.json"));
+  for (const char* name : {"mu0=1 seed=1", "mu0=1 seed=2", "mu0=1 seed=3", "mu0=1"})
+    EXPECT_TRUE(j["samples"][name]["fitted"].get<bool>()) << name;
+  EXPECT_EQ(j["samples"]["mu0=1"]["seeds"]["spread"]["phi_m"]["n"], 3);
+
+  // No --sample: the pooled fit answers, and says so.
+  const std::string model = (out / "wyart_cates.json").string();
+  const auto p = dir.run({"predict", "--model", model, "--phi", "0.50", "--json"});
+  ASSERT_EQ(p.exit_code, 0) << p.err;
+  EXPECT_EQ(nlohmann::json::parse(p.out)["sample"], "mu0=1");
+  const auto one =
+      dir.run({"predict", "--model", model, "--phi", "0.50", "--sample", "mu0=1 seed=2", "--json"});
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  EXPECT_EQ(nlohmann::json::parse(one.out)["sample"], "mu0=1 seed=2");
 }
 
 TEST(WyartCatesCommand, DataThatCannotBeFittedExitTwoWithTheReason) {

@@ -6,7 +6,8 @@ fitting here).
 Usage: python3 python/dilatant/plots/wyart_cates.py DIR
    or: dilatant.plots.wyart_cates.draw(DIR)
 Reads DIR/wyart_cates.json, wyart_cates_curves.csv and wyart_cates_map.csv;
-writes DIR/wyart_cates.png and .svg: one row per sample,
+writes DIR/wyart_cates.png and .svg: one row per sample (seeds pooled: one row
+for their pooled fit, none for each seed alone; their scatter is in the text),
   left   viscosity vs shear stress, one colour per phi: filled markers = fitted
          points, hollow = not fitted (outside validity, jammed), lines = the
          fitted model (Wyart & Cates, PRL 112, 098302, 2014);
@@ -80,6 +81,12 @@ def overlay(ax, sample, rows, fit, units):
                 f"$\\beta$ = {with_error(fit['beta'], fit['beta_err'], 3)} "
                 f"({fit['beta_source']}), "
                 f"$\\chi^2$/dof = {fit['chi2_per_dof']:.3g}")
+        if "seeds" in fit:
+            spread = fit["seeds"]["spread"]
+            text += (f"\n{len(fit['seeds']['members'])} seeds pooled; their own fits: "
+                     + ", ".join(f"{k} {with_error(v['mean'], v['sem'])}"
+                                 for k, v in spread.items()
+                                 if k in ("phi_0", "phi_m", "phi_dst") and v["mean"] is not None))
         ax.text(0.03, 0.97, text, transform=ax.transAxes, fontsize=6.5, va="top")
         ax.set_title(f"sample {sample}: data and the fitted model (lines)", fontsize=9)
     else:
@@ -121,7 +128,8 @@ def draw(out):
     fits = json.loads((out / "wyart_cates.json").read_text())
     curves = read_rows(out / "wyart_cates_curves.csv")
     states = read_rows(out / "wyart_cates_map.csv")
-    samples = list(fits["samples"].keys())
+    pooled = {m for f in fits["samples"].values() for m in f.get("seeds", {}).get("members", [])}
+    samples = [s for s in fits["samples"] if s not in pooled]
     fig, axes = plt.subplots(len(samples), 2, figsize=(10.5, 4.3 * len(samples)), squeeze=False,
                              constrained_layout=True)
     for (ax_curves, ax_map), sample in zip(axes, samples):
