@@ -89,10 +89,16 @@ std::string json_field(const nlohmann::json& v) {
   return field(v.dump());
 }
 
+// A key of a JSON object (a summary, a cold start's), as a table field;
+// empty when the object or the key is missing.
+std::string member_field(const nlohmann::json& object, std::string_view key) {
+  if (!object.is_object()) return "";
+  const auto it = object.find(std::string(key));
+  return it == object.end() ? "" : json_field(*it);
+}
+
 std::string summary_field(const PointRecord& r, std::string_view key) {
-  if (r.status != PointStatus::Done || !r.summary.is_object()) return "";
-  const auto it = r.summary.find(std::string(key));
-  return it == r.summary.end() ? "" : json_field(*it);
+  return r.status == PointStatus::Done ? member_field(r.summary, key) : "";
 }
 
 }  // namespace
@@ -137,8 +143,9 @@ std::string flowcurves_csv(const SweepPlan& plan, const std::vector<PointRecord>
   for (auto c : kSummaryBefore) header.emplace_back(c);
   header.emplace_back("phi_realized");
   for (auto c : kSummaryAfter) header.emplace_back(c);
-  for (auto c : {"sample"sv, "start"sv, "dir"sv, "jam_cold_start"sv, "jam_cold_start_phi"sv,
-                 "jam_cold_start_phi_bulk"sv})
+  for (auto c :
+       {"sample"sv, "start"sv, "dir"sv, "jam_cold_start"sv, "jam_cold_start_phi"sv,
+        "jam_cold_start_phi_bulk"sv, "jam_phi_bulk_start"sv, "jam_cold_start_phi_bulk_start"sv})
     header.emplace_back(c);
 
   std::string out;
@@ -172,11 +179,10 @@ std::string flowcurves_csv(const SweepPlan& plan, const std::vector<PointRecord>
                                                         : "flowed");
     // The cold start's nominal phi and the bulk fraction it reached
     // (sweep.cold_start_phi; docs/sweeps.md "Ramps to the jam").
-    for (auto c : {"phi_requested"sv, "phi_bulk"sv}) {
-      const auto it = r.cold_start.is_object() ? r.cold_start.find(c) : r.cold_start.end();
-      row.push_back(
-          it != r.cold_start.end() && it->is_number() ? fmt::format("{}", it->get<double>()) : "");
-    }
+    for (auto c : {"phi_requested"sv, "phi_bulk"sv}) row.push_back(member_field(r.cold_start, c));
+    // Where the jammed point and its cold start began (sweep.cold_start_phi = "bulk").
+    for (auto c : {"target_phi_bulk"sv, "phi_bulk_start"sv})
+      row.push_back(member_field(r.cold_start_choice, c));
     for (std::size_t k = 0; k < row.size(); ++k) out += (k ? "," : "") + row[k];
     out += "\n";
   }

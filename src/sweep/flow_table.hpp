@@ -35,6 +35,13 @@
 //   jam_cold_start  for a continued point that jammed (sweep.confirm_jams):
 //                jammed | flowed (its cold start in DIR/dir/cold-start/) or
 //                pending; else empty.
+//   jam_cold_start_phi, jam_cold_start_phi_bulk  that cold start's nominal phi
+//                and the bulk fraction it reached (its summary.json);
+//   jam_phi_bulk_start, jam_cold_start_phi_bulk_start  under
+//                sweep.cold_start_phi = "bulk": the bulk fraction the jammed
+//                point began from (the final state of the point before it) and
+//                the one its cold start's packing begins with
+//                (cold-start/phi_choice.json); else empty.
 // Booleans are true/false, numbers the shortest text that reads back exactly;
 // a field with ',' or '"' is quoted (with '"' inside turned into ').
 #include <nlohmann/json.hpp>
@@ -55,6 +62,9 @@ struct PointRecord {
   nlohmann::json summary;  // when done: summary.json
   // A jam's confirmation from a cold start: its summary.json once run.
   nlohmann::json cold_start;
+  // How that cold start's phi was chosen (cold_start_choice.hpp): its
+  // cold-start/phi_choice.json under sweep.cold_start_phi = "bulk", else null.
+  nlohmann::json cold_start_choice;
 };
 
 // The point ran and jammed.

@@ -47,6 +47,7 @@ std::string record_json(std::size_t point, const PointRecord& record) {
   j["error"] = record.error;
   j["summary"] = record.summary;
   j["cold_start"] = record.cold_start;
+  j["cold_start_choice"] = record.cold_start_choice;
   return j.dump();
 }
 
@@ -57,6 +58,7 @@ std::pair<std::size_t, PointRecord> parse_record(const std::string& text) {
   record.error = j.at("error").get<std::string>();
   record.summary = j.at("summary");
   record.cold_start = j.at("cold_start");
+  record.cold_start_choice = j.at("cold_start_choice");
   return {j.at("point").get<std::size_t>(), std::move(record)};
 }
 

@@ -235,8 +235,10 @@ SweepSettings read_settings(const toml::table& t, const std::string& source) {
                                     : s.confirm_jams) = *v;
     } else if (key.str() == "cold_start_phi") {
       const auto v = node.value_exact<std::string>();
-      if (!v || (*v != "matched" && *v != "nominal")) fail("expected \"matched\" or \"nominal\"");
+      if (!v || (*v != "matched" && *v != "nominal" && *v != "bulk"))
+        fail("expected \"nominal\", \"matched\" or \"bulk\"");
       s.cold_start_phi = *v == "matched" ? SweepSettings::ColdStartPhi::Matched
+                         : *v == "bulk"  ? SweepSettings::ColdStartPhi::Bulk
                                          : SweepSettings::ColdStartPhi::Nominal;
     } else if (key.str() == "continuation_strain" || key.str() == "continuation_transient_strain") {
       const auto v = node.value<double>();

@@ -77,10 +77,11 @@ struct SweepSettings {
   std::optional<double> continuation_transient_strain;
   bool stop_at_jam = true;
   bool confirm_jams = true;
-  // The nominal phi of a jam's cold start (docs/sweeps.md "Ramps to the jam"):
-  // the ramp's own (nominal), or shifted by the ramp's change of the bulk
-  // before the jam (matched; sweep_work.cpp).
-  enum class ColdStartPhi { Nominal, Matched };
+  // The nominal phi of a jam's cold start (docs/sweeps.md "Ramps to the jam";
+  // cold_start_choice.hpp): the ramp's own (nominal), shifted by the ramp's
+  // change of the bulk before the jam (matched), or the one whose packing
+  // begins at the bulk fraction the jammed point began from (bulk).
+  enum class ColdStartPhi { Nominal, Matched, Bulk };
   ColdStartPhi cold_start_phi = ColdStartPhi::Nominal;
 };
 

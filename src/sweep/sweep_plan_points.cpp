@@ -132,10 +132,11 @@ std::string resolved_sweep_toml(const SweepPlan& plan) {
   const SweepSettings& s = plan.settings;
   out += fmt::format("\n[sweep]\njobs = {}\ncontinuation = {}\n", s.jobs, s.continuation);
   if (s.continuation)
-    out += fmt::format(
-        "stop_at_jam = {}\nconfirm_jams = {}\ncold_start_phi = \"{}\"\n", s.stop_at_jam,
-        s.confirm_jams,
-        s.cold_start_phi == SweepSettings::ColdStartPhi::Matched ? "matched" : "nominal");
+    out += fmt::format("stop_at_jam = {}\nconfirm_jams = {}\ncold_start_phi = \"{}\"\n",
+                       s.stop_at_jam, s.confirm_jams,
+                       s.cold_start_phi == SweepSettings::ColdStartPhi::Matched ? "matched"
+                       : s.cold_start_phi == SweepSettings::ColdStartPhi::Bulk  ? "bulk"
+                                                                                : "nominal");
   if (s.continuation_strain)
     out += fmt::format("continuation_strain = {}\n",
                        toml_value_text(toml::value<double>(*s.continuation_strain)));

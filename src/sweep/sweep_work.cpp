@@ -11,6 +11,7 @@
 #include "io/atomic_file.hpp"
 #include "io/output_folder.hpp"
 #include "io/text.hpp"
+#include "sweep/cold_start_choice.hpp"
 
 namespace dilatant::sweep {
 namespace {
@@ -33,12 +34,6 @@ SweepPoint cold_point(const SweepPoint& p, Config config) {
   cold.config = std::move(config);
   cold.continues_from.reset();
   return cold;
-}
-
-double summary_phi_bulk(const PointRecord& r) {
-  const auto it = r.summary.is_object() ? r.summary.find("phi_bulk") : r.summary.end();
-  return it != r.summary.end() && it->is_number() ? it->get<double>()
-                                                  : std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace
@@ -85,15 +80,20 @@ bool SweepWork::load_point(std::size_t i) {
     records_[i].status = PointStatus::Done;
     records_[i].summary = std::move(summary);
   }
-  if (needs_confirmation(i) && inspect_point_folder(cold_point(p, cold_config(i)),
-                                                    folder / kColdStart) == PointState::Done) {
-    try {
-      auto cold = read_summary(folder / kColdStart / "summary.json");
+  if (!needs_confirmation(i) ||
+      !std::filesystem::is_regular_file(folder / kColdStart / "summary.json"))
+    return true;
+  try {
+    ColdStartChoice cold = cold_choice(i);
+    if (inspect_point_folder(cold_point(p, std::move(cold.config)), folder / kColdStart) ==
+        PointState::Done) {
+      auto cold_summary = read_summary(folder / kColdStart / "summary.json");
       std::lock_guard lock(mutex_);
-      records_[i].cold_start = std::move(cold);
-    } catch (const std::exception&) {
-      // unreadable: the confirmation runs again
+      records_[i].cold_start = std::move(cold_summary);
+      records_[i].cold_start_choice = std::move(cold.record);
     }
+  } catch (const std::exception&) {
+    // unreadable, or its choice cannot be made again: the confirmation runs again
   }
   return true;
 }
@@ -133,36 +133,15 @@ void SweepWork::run_unit(const WorkUnit& unit, bool inspect_first) {
   for (std::size_t i : unit) run_point(i);
 }
 
-// The cold start of continued point i's jam. A wall cell's bulk fraction is
-// not its nominal phi (the layers at the walls are looser), and a ramp
-// compacts (or dilates) its bulk as it goes, so a cold start at the ramp's
-// nominal phi starts from another packing fraction than the state the jammed
-// point started from (0.010-0.015 denser on the paper's DST map). The ramp's
-// first point is a cold start at the nominal phi: its phi_bulk measured the
-// offset. Matched: shift the nominal phi by the ramp's change of the bulk up
-// to the jam, from the first point to the one the jammed point continued from,
-//     phi_cold = phi + phi_bulk(previous point) - phi_bulk(first point),
-// so that the cold start begins at the bulk fraction the stress step met, as
-// far as the offset does not change over that shift. Not the jammed point's
-// own phi_bulk: a jam dilates the packing it stops (by 0.02 in the small cell
-// of tests/sweep/ramp_jam_test.cpp), and so does its cold start's. In a
-// Lees–Edwards box phi_bulk is the box's at every point: no shift.
-Config SweepWork::cold_config(std::size_t i) const {
-  const SweepPoint& p = plan_.points[i];
-  Config config = p.cold_start.value_or(p.config);
-  if (plan_.settings.cold_start_phi != SweepSettings::ColdStartPhi::Matched || !p.continues_from)
-    return config;
-  std::size_t first = i;
-  while (plan_.points[first].continues_from) first = *plan_.points[first].continues_from;
-  std::lock_guard lock(mutex_);
-  const double shift =
-      summary_phi_bulk(records_[*p.continues_from]) - summary_phi_bulk(records_[first]);
-  CellConfig* cell = config.cell();
-  if (cell != nullptr && std::isfinite(shift) && shift != 0.0) {
-    cell->phi += shift;
-    config.resolved = to_toml(config);
+// The cold start of continued point i's jam (cold_start_choice.hpp), from a
+// copy of the records: a "bulk" choice builds packings, without the lock.
+ColdStartChoice SweepWork::cold_choice(std::size_t i) const {
+  std::vector<PointRecord> records;
+  {
+    std::lock_guard lock(mutex_);
+    records = records_;
   }
-  return config;
+  return choose_cold_start(plan_, i, records, options_.out);
 }
 
 // A continued point that jammed, whose cold start has not run yet.
@@ -176,10 +155,15 @@ bool SweepWork::needs_confirmation(std::size_t i) const {
 // cold-start/ (resumable like a point): a ramp's jam is reported with whether
 // the same stress jams a cold start too.
 void SweepWork::confirm_jam(std::size_t i) {
-  const SweepPoint cold = cold_point(plan_.points[i], cold_config(i));
   const auto folder = options_.out / plan_.points[i].folder / kColdStart;
-  const PointState state = inspect_point_folder(cold, folder);
   try {
+    ColdStartChoice choice = cold_choice(i);
+    const SweepPoint cold = cold_point(plan_.points[i], std::move(choice.config));
+    const PointState state = inspect_point_folder(cold, folder);
+    if (!choice.record.is_null() && !std::filesystem::is_regular_file(folder / kPhiChoiceFile)) {
+      std::filesystem::create_directories(folder);
+      write_file_atomically(folder / kPhiChoiceFile, choice.record.dump(2) + "\n");
+    }
     nlohmann::json summary;
     if (state != PointState::Done) {
       CellRunOptions o;
@@ -195,6 +179,7 @@ void SweepWork::confirm_jam(std::size_t i) {
     if (!summary.is_object()) summary = read_summary(folder / "summary.json");
     std::lock_guard lock(mutex_);
     records_[i].cold_start = std::move(summary);
+    records_[i].cold_start_choice = std::move(choice.record);
     changed(i, true);
   } catch (const std::exception& e) {
     std::lock_guard lock(mutex_);

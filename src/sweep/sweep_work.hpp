@@ -23,6 +23,7 @@
 #include <utility>
 #include <vector>
 
+#include "sweep/cold_start_choice.hpp"
 #include "sweep/flow_table.hpp"
 #include "sweep/point_folder.hpp"
 #include "sweep/sweep_plan.hpp"
@@ -95,7 +96,7 @@ class SweepWork {
   // jam's cold start). Returns whether it is done.
   bool load_point(std::size_t i);
   bool needs_confirmation(std::size_t i) const;
-  Config cold_config(std::size_t i) const;
+  ColdStartChoice cold_choice(std::size_t i) const;
   void confirm_jam(std::size_t i);
   void run_point(std::size_t i);
   void finish(std::size_t i, PointStatus status, const std::string& error,

@@ -41,10 +41,10 @@ nlohmann::json summary(double lambda, bool jammed) {
 TEST(FlowTable, OneRowPerPointSweptKeysFirstThenStatusAndSummary) {
   const SweepPlan plan = parse_sweep(test::kTinyGrid, "s.toml", ".", {});
   std::vector<PointRecord> records(4);
-  records[0] = {PointStatus::Done, "", summary(3.0, false), {}};
-  records[1] = {PointStatus::Failed, "could not pack, \"really\"", {}, {}};
-  records[2] = {PointStatus::Running, "", {}, {}};
-  records[3] = {PointStatus::Done, "", summary(30.0, true), {}};
+  records[0] = {PointStatus::Done, "", summary(3.0, false), {}, {}};
+  records[1] = {PointStatus::Failed, "could not pack, \"really\"", {}, {}, {}};
+  records[2] = {PointStatus::Running, "", {}, {}, {}};
+  records[3] = {PointStatus::Done, "", summary(30.0, true), {}, {}};
   const auto rows = lines(flowcurves_csv(plan, records));
   ASSERT_EQ(rows.size(), 5u);
   EXPECT_EQ(rows[0].rfind("friction.mu0,fluid.lambda,point,status,error,phi,mu0,lambda,"
@@ -53,8 +53,8 @@ TEST(FlowTable, OneRowPerPointSweptKeysFirstThenStatusAndSummary) {
             0u)
       << rows[0];
   const auto header = analysis::split_fields(rows[0], ',');
-  EXPECT_EQ(header.back(), "jam_cold_start_phi_bulk");
-  EXPECT_EQ(header[header.size() - 3], "jam_cold_start");
+  EXPECT_EQ(header.back(), "jam_cold_start_phi_bulk_start");
+  EXPECT_EQ(header[header.size() - 5], "jam_cold_start");
   const auto column = [&](std::size_t row, const std::string& name) {
     const auto fields = analysis::split_fields(rows[row], ',');
     EXPECT_EQ(fields.size(), header.size()) << rows[row];
@@ -94,8 +94,8 @@ TEST(FlowTable, SummaryInMemoryAndReadBackGiveTheSameRow) {
   in_memory["mobile_spheres"] = std::size_t{470};
   in_memory["steps"] = -1L;  // a signed integer in memory, any sign
   std::vector<PointRecord> memory(4), disk(4);
-  memory[0] = {PointStatus::Done, "", in_memory, {}};
-  disk[0] = {PointStatus::Done, "", nlohmann::json::parse(in_memory.dump(2)), {}};
+  memory[0] = {PointStatus::Done, "", in_memory, {}, {}};
+  disk[0] = {PointStatus::Done, "", nlohmann::json::parse(in_memory.dump(2)), {}, {}};
   const auto from_memory = lines(flowcurves_csv(plan, memory));
   EXPECT_EQ(from_memory, lines(flowcurves_csv(plan, disk)));
   EXPECT_NE(from_memory[1].find(",0.30000000000000004,"), std::string::npos) << from_memory[1];
@@ -139,7 +139,7 @@ TEST(FlowTable, APressureSweepsRowsCarryTheImposedStressAndTheMeasuredPhiAndMu) 
   done["box_height_mean"] = 7.2;
   done["box_height_fluctuation"] = 0.01;
   std::vector<PointRecord> records(4);
-  records[1] = {PointStatus::Done, "", done, {}};
+  records[1] = {PointStatus::Done, "", done, {}, {}};
   const auto rows = lines(flowcurves_csv(plan, records));
   const auto header = analysis::split_fields(rows[0], ',');
   EXPECT_EQ(header[0], "cell.shear_rate");
@@ -175,10 +175,10 @@ TEST(FlowTable, AnalyzeReadsDoneRowsOnlyAndGroupsCurvesByPhiAndSample) {
   ASSERT_EQ(plan.points.size(), 4u);
   EXPECT_EQ(sample_label(plan, plan.points[1]), "mu0=0.1 law=coulomb");
   std::vector<PointRecord> records(4);
-  records[0] = {PointStatus::Done, "", summary(3.0, false), {}};
-  records[1] = {PointStatus::Done, "", summary(3.0, false), {}};
-  records[2] = {PointStatus::Done, "", summary(30.0, false), {}};
-  records[3] = {PointStatus::Failed, "boom", {}, {}};
+  records[0] = {PointStatus::Done, "", summary(3.0, false), {}, {}};
+  records[1] = {PointStatus::Done, "", summary(3.0, false), {}, {}};
+  records[2] = {PointStatus::Done, "", summary(30.0, false), {}, {}};
+  records[3] = {PointStatus::Failed, "boom", {}, {}, {}};
   const auto file = dir.write("flowcurves.csv", flowcurves_csv(plan, records));
   const analysis::AnalysisInput in = analysis::read_sweep_table(file);
   // Two curves at phi 0.58: Stribeck with 2 points, Coulomb with the 1 done.

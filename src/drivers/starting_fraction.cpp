@@ -1,0 +1,50 @@
+#include "drivers/starting_fraction.hpp"
+
+#include <cmath>
+
+#include "drivers/shear_cell.hpp"
+#include "drivers/shear_cell_state.hpp"
+#include "drivers/shear_cell_summary.hpp"
+
+namespace dilatant {
+
+namespace {
+
+double scan_offset(int k, double step) {
+  // 0, +step, -step, +2 step, -2 step, ...
+  const int n = (k + 1) / 2;
+  return (k % 2 == 1 ? 1.0 : -1.0) * n * step;
+}
+
+}  // namespace
+
+double starting_bulk_fraction(const Config& config) {
+  return bulk_fraction(ShearCell(config).state());
+}
+
+double checkpoint_bulk_fraction(const std::filesystem::path& checkpoint) {
+  return bulk_fraction(load_checkpoint(checkpoint));
+}
+
+StartingFractionMatch match_starting_bulk(Config config, double target, double tolerance,
+                                          int max_packings) {
+  StartingFractionMatch best;
+  const double phi_0 = config.cell()->phi;
+  double estimate = phi_0;
+  for (int k = 0; k < max_packings; ++k) {
+    const double phi = k == 0 ? phi_0 : estimate + scan_offset(k - 1, tolerance);
+    config.cell()->phi = phi;
+    const double bulk = starting_bulk_fraction(config);
+    best.tried.emplace_back(phi, bulk);
+    if (k == 0) estimate = phi_0 + target - bulk;
+    if (k == 0 || std::abs(bulk - target) < std::abs(best.phi_bulk_start - target)) {
+      best.phi = phi;
+      best.phi_bulk_start = bulk;
+    }
+    if (std::abs(bulk - target) <= tolerance) break;
+  }
+  best.within_tolerance = std::abs(best.phi_bulk_start - target) <= tolerance;
+  return best;
+}
+
+}  // namespace dilatant

@@ -1,0 +1,98 @@
+#include "sweep/cold_start_choice.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "drivers/starting_fraction.hpp"
+#include "io/text.hpp"
+
+namespace dilatant::sweep {
+namespace {
+
+double summary_phi_bulk(const PointRecord& r) {
+  const auto it = r.summary.is_object() ? r.summary.find("phi_bulk") : r.summary.end();
+  return it != r.summary.end() && it->is_number() ? it->get<double>()
+                                                  : std::numeric_limits<double>::quiet_NaN();
+}
+
+void set_phi(Config& config, double phi) {
+  config.cell()->phi = phi;
+  config.resolved = to_toml(config);
+}
+
+// Matched: a wall cell's bulk fraction is not its nominal phi (the layers at
+// the walls are looser), and a ramp compacts (or dilates) its bulk as it goes,
+// so a cold start at the ramp's nominal phi starts from another packing
+// fraction than the state the jammed point started from (0.010-0.015 denser
+// on the paper's DST map). The ramp's first point is a cold start at the
+// nominal phi: its phi_bulk measured the offset. Shift the nominal phi by the
+// ramp's change of the bulk up to the jam, from the first point to the one the
+// jammed point continued from,
+//     phi_cold = phi + phi_bulk(previous point) - phi_bulk(first point),
+// so that the cold start begins at the bulk fraction the stress step met, as
+// far as the offset does not change over that shift. Not the jammed point's
+// own phi_bulk: a jam dilates the packing it stops (by 0.02 in the small cell
+// of tests/sweep/ramp_jam_test.cpp), and so does its cold start's. phi_bulk
+// is a time average, not the final state; "bulk" measures the final state.
+// In a Lees–Edwards box phi_bulk is the box's at every point: no shift.
+void match_time_averaged_bulk(const SweepPlan& plan, std::size_t i,
+                              const std::vector<PointRecord>& records, Config& config) {
+  std::size_t first = i;
+  while (plan.points[first].continues_from) first = *plan.points[first].continues_from;
+  const double shift =
+      summary_phi_bulk(records[*plan.points[i].continues_from]) - summary_phi_bulk(records[first]);
+  if (std::isfinite(shift) && shift != 0.0) set_phi(config, config.cell()->phi + shift);
+}
+
+nlohmann::json bulk_choice(const SweepPlan& plan, std::size_t i, const Config& config,
+                           const std::filesystem::path& out) {
+  const SweepPoint& before = plan.points[*plan.points[i].continues_from];
+  const auto checkpoint = out / before.folder / "checkpoint.bin";
+  const double target = checkpoint_bulk_fraction(checkpoint);
+  const StartingFractionMatch m =
+      match_starting_bulk(config, target, kBulkTolerance, kBulkMaxPackings);
+  nlohmann::json j;
+  j["rule"] = "bulk";
+  j["target_phi_bulk"] = target;
+  j["target_from"] = before.folder + "/checkpoint.bin";
+  j["tolerance"] = kBulkTolerance;
+  j["phi"] = m.phi;
+  j["phi_bulk_start"] = m.phi_bulk_start;
+  j["within_tolerance"] = m.within_tolerance;
+  j["tried"] = nlohmann::json::array();
+  for (const auto& [phi, bulk] : m.tried) j["tried"].push_back({{"phi", phi}, {"phi_bulk", bulk}});
+  return j;
+}
+
+}  // namespace
+
+ColdStartChoice choose_cold_start(const SweepPlan& plan, std::size_t jammed,
+                                  const std::vector<PointRecord>& records,
+                                  const std::filesystem::path& out) {
+  const SweepPoint& p = plan.points[jammed];
+  ColdStartChoice c{p.cold_start.value_or(p.config), nullptr};
+  if (!p.continues_from || c.config.cell() == nullptr) return c;
+  switch (plan.settings.cold_start_phi) {
+    case SweepSettings::ColdStartPhi::Nominal:
+      return c;
+    case SweepSettings::ColdStartPhi::Matched:
+      match_time_averaged_bulk(plan, jammed, records, c.config);
+      return c;
+    case SweepSettings::ColdStartPhi::Bulk:
+      break;
+  }
+  const auto file = out / p.folder / "cold-start" / kPhiChoiceFile;
+  if (std::filesystem::is_regular_file(file)) {
+    try {
+      c.record = nlohmann::json::parse(read_input_file(file, "cold start's phi choice"));
+      if (!c.record.contains("phi") || !c.record["phi"].is_number()) c.record = nullptr;
+    } catch (const std::exception&) {
+      c.record = nullptr;  // unreadable: chosen again
+    }
+  }
+  if (c.record.is_null()) c.record = bulk_choice(plan, jammed, c.config, out);
+  set_phi(c.config, c.record["phi"].get<double>());
+  return c;
+}
+
+}  // namespace dilatant::sweep
