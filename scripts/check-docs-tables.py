@@ -429,7 +429,9 @@ def check_value(md, marker_line, marker, paragraph, root, cache, problems):
     value = cand[0].get(ref["name"], "")
     says = marker["says"]
     label = ", ".join(f"{c}={v}" for c, v in marker["where"]) or "1"
-    if says not in " ".join(paragraph.split()):
+    # The paragraph's own words: the text of markers stacked below this one
+    # holds their `says` too and must not answer for it.
+    if says not in " ".join(MARKER.sub(" ", paragraph).split()):
         problems.append(f"{md}:{marker_line}: the paragraph below the marker does not say '{says}'")
     numbers = parse_numbers(says)
     f = to_float(value)
@@ -587,6 +589,15 @@ def self_test():
                 failures.append(f"'{new}' not reported as '{expected}': {problems}")
             elif not all(re.match(r"docs/x\.md:\d+: ", p) for p in problems):
                 failures.append(f"a problem without its file and line: {problems}")
+        # Stacked markers: each `says` must be in the paragraph's own words,
+        # not in the marker below it.
+        stacked = AGREE.replace(
+            '<!-- value-source: d/t.csv where=mu0=0.4 column=note says="step 143039" -->\n',
+            '<!-- value-source: d/t.csv where=mu0=0.4 column=note says="step 143039" -->\n' * 2)
+        (root / "docs/x.md").write_text(stacked.replace("at step 143039, says", "at step 1114, says"))
+        problems, _ = run(root, ["docs"])
+        if sum("does not say 'step 143039'" in p for p in problems) != 2:
+            failures.append(f"a stacked marker answered for the one above it: {problems}")
         # A number the docs round is not a disagreement; one they change is.
         roundings = [("0.6355", 0.63555, True), ("6.9e-4", 6.95e-4, True),
                      ("195,000", 194_873, True), ("338", 338.4, True),
