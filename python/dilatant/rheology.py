@@ -118,8 +118,9 @@ def predict(mu0=None, phi=None, s_c=None, table=None, *, model=None, stress=None
     wyart-cates`): the regime from that fit instead ('cst', 'dst',
     'shear_jamming', 'no_flow'), and with stress the state of the
     stress-controlled flow there: the dict of `dilatant predict --model FILE
-    --json`; sample chooses among several fitted samples. `source` in the
-    dict says which answered."""
+    --json`; sample chooses among several fitted samples (default: the only
+    one, or the pooled fit of one suspension's seeds). `source` in the dict
+    says which answered."""
     if phi is None:
         raise TypeError("predict() needs phi")
     if model is not None:

@@ -82,7 +82,16 @@ FittedWyartCates read_fitted_wyart_cates(const std::filesystem::path& file,
   const Json j = read_model_file(file);
   const std::vector<std::string> fitted = fitted_wyart_cates_samples(file);
   std::string name = sample;
-  if (name.empty()) name = the_pooled_sample(j, fitted);
+  if (name.empty()) {
+    // A pooled fit that failed: one seed's fit must not answer for the
+    // suspension unasked.
+    for (const auto& [pooled, entry] : j["samples"].items())
+      if (entry.contains("seeds") && !entry.value("fitted", false))
+        throw InputError(fmt::format(
+            "{}: the pooled fit of the seeds ({}) failed ({}); choose a seed's fit with {}",
+            file.string(), pooled, entry.value("fit_note", "no reason given"), sample_option));
+    name = the_pooled_sample(j, fitted);
+  }
   if (name.empty()) {
     if (fitted.size() != 1)
       throw InputError(
@@ -110,6 +119,20 @@ FittedWyartCates read_fitted_wyart_cates(const std::filesystem::path& file,
   // its error is the fit's.
   f.phi_dst = {dst_onset(f.model).phi,
                s.contains("dst") ? number_or_nan(s["dst"], "phi_dst_err") : kUnknownError};
+  // A pooled fit of several seeds: its errors come from the residuals of
+  // packings pooled together, which understate the scatter between packings
+  // (docs/wyart-cates.md "Seeds"); the boundaries' errors are the larger of
+  // the fit's and the seeds' standard error.
+  if (s.contains("seeds") && s["seeds"].contains("spread")) {
+    const Json& spread = s["seeds"]["spread"];
+    for (auto [key, e] :
+         {std::pair{"phi_0", &f.phi_0}, {"phi_m", &f.phi_m}, {"phi_dst", &f.phi_dst}})
+      if (spread.contains(key)) {
+        const double sem = number_or_nan(spread[key], "sem");
+        if (std::isfinite(sem) && !(e->err >= sem)) e->err = sem;
+      }
+    f.errors = "the larger of the pooled fit's and the seeds' standard error";
+  }
   f.units = j.value("units", Json::object());
   return f;
 }
@@ -128,6 +151,7 @@ Json wyart_cates_prediction(const FittedWyartCates& fit, double phi, std::option
   j["phi_m_err"] = or_null_value(fit.phi_m.err);
   j["phi_0"] = or_null_value(fit.phi_0.value);
   j["phi_0_err"] = or_null_value(fit.phi_0.err);
+  j["errors"] = fit.errors;
   double margin = std::numeric_limits<double>::infinity();
   for (const Estimate& b : {fit.phi_dst, fit.phi_m, fit.phi_0})
     if (std::isfinite(b.value) && b.err > 0.0)

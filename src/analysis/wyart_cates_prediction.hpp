@@ -23,6 +23,9 @@ struct FittedWyartCates {
   WyartCatesParameters model;
   Estimate phi_0, phi_m, phi_dst;  // err NaN when not known
   nlohmann::ordered_json units;    // as written by the fit
+  // What the boundaries' errors are: the fit's, or for a pooled fit of seeds
+  // the larger of the fit's and the seeds' standard error.
+  std::string errors = "the fit's standard errors";
 };
 
 // The names of the fitted samples in a wyart_cates.json; InputError when the

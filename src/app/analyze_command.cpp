@@ -133,6 +133,23 @@ void print_summary(const analysis::AnalysisReport& r, const std::filesystem::pat
   }
 }
 
+// The seeds' own fits: mean +- standard error (n seeds with a value) per
+// quantity; "-" where none had one.
+std::string seed_spread_text(const std::vector<analysis::SeedSpread>& spreads) {
+  std::string text;
+  for (const auto& q : spreads) {
+    text += text.empty() ? "" : ", ";
+    if (q.n == 0) {
+      text += q.name + " -";
+    } else if (q.n == 1) {
+      text += fmt::format("{} {:.4g} (n=1)", q.name, q.mean);
+    } else {
+      text += fmt::format("{} {} (n={})", q.name, with_error({q.mean, q.sem}, "{:.4g}"), q.n);
+    }
+  }
+  return text + " (mean +- standard error)";
+}
+
 void print_model_summary(const analysis::WyartCatesReport& r) {
   const auto& st = r.settings;
   std::cout << fmt::format("  Wyart-Cates fit (alpha {}, beta {}):\n",
@@ -142,6 +159,9 @@ void print_model_summary(const analysis::WyartCatesReport& r) {
     const auto& f = s.outcome.fit;
     if (!f) {
       std::cout << fmt::format("    {}: no fit: {}\n", s.sample, s.outcome.why_not);
+      if (!s.members.empty())
+        std::cout << fmt::format("      its {} seeds' own fits: {}\n", s.members.size(),
+                                 seed_spread_text(s.seed_spreads));
       continue;
     }
     std::string exponents;
@@ -154,13 +174,8 @@ void print_model_summary(const analysis::WyartCatesReport& r) {
         with_error(f->sigma_star, "{:.4g}"), with_error(f->A, "{:.4g}"), exponents,
         f->chi2_per_dof(), with_error({s.onset.phi, s.onset_phi_err}, "{:.4f}"));
     if (s.members.empty()) continue;
-    std::string spread;
-    for (const auto& q : s.seed_spreads)
-      spread += fmt::format("{}{} {}", spread.empty() ? "" : ", ", q.name,
-                            with_error({q.mean, q.sem}, "{:.4g}"));
-    std::cout << fmt::format(
-        "      the {} seeds pooled; their own fits (mean +- standard error): {}\n",
-        s.members.size(), spread);
+    std::cout << fmt::format("      the {} seeds pooled; their own fits: {}\n", s.members.size(),
+                             seed_spread_text(s.seed_spreads));
   }
 }
 

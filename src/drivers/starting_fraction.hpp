@@ -37,10 +37,10 @@ struct StartingFractionMatch {
 // +2, -2, ...). b is not smooth in phi: each nominal phi draws another packing
 // (another N, other layers in the slab), and its starting bulk scatters about
 // the mean offset, by up to 0.005 in the paper's cell (25 x 10 x 27 R) and
-// 0.01 in a 20 R gap (docs/sweeps.md "Ramps to the jam"); a scan of neighbouring packings finds one that starts near
-// the target where a root finder would chase the scatter. At most
-// `max_packings` are built; the closest is chosen, and within_tolerance says
-// whether it is within.
+// 0.01 in a 20 R gap (docs/sweeps.md "Ramps to the jam"); a scan of neighbouring packings finds one
+// that starts near the target where a root finder would chase the scatter. At most `max_packings`
+// are built; the closest is chosen, and within_tolerance says whether it is within. A phi that does
+// not pack is recorded with a NaN bulk and passed over; if none packs, phi_bulk_start is NaN.
 StartingFractionMatch match_starting_bulk(Config config, double target, double tolerance,
                                           int max_packings);
 

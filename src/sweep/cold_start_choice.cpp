@@ -1,7 +1,10 @@
 #include "sweep/cold_start_choice.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "drivers/starting_fraction.hpp"
 #include "io/text.hpp"
@@ -51,6 +54,11 @@ nlohmann::json bulk_choice(const SweepPlan& plan, std::size_t i, const Config& c
   const double target = checkpoint_bulk_fraction(checkpoint);
   const StartingFractionMatch m =
       match_starting_bulk(config, target, kBulkTolerance, kBulkMaxPackings);
+  if (!std::isfinite(m.phi_bulk_start))
+    throw std::runtime_error(fmt::format(
+        "none of the {} packings tried for the cold start (nominal phi from {:.4f}) could be "
+        "built",
+        m.tried.size(), config.cell()->phi));
   nlohmann::json j;
   j["rule"] = "bulk";
   j["target_phi_bulk"] = target;
@@ -68,7 +76,7 @@ nlohmann::json bulk_choice(const SweepPlan& plan, std::size_t i, const Config& c
 
 ColdStartChoice choose_cold_start(const SweepPlan& plan, std::size_t jammed,
                                   const std::vector<PointRecord>& records,
-                                  const std::filesystem::path& out) {
+                                  const std::filesystem::path& out, bool search) {
   const SweepPoint& p = plan.points[jammed];
   ColdStartChoice c{p.cold_start.value_or(p.config), nullptr};
   if (!p.continues_from || c.config.cell() == nullptr) return c;
@@ -90,7 +98,14 @@ ColdStartChoice choose_cold_start(const SweepPlan& plan, std::size_t jammed,
       c.record = nullptr;  // unreadable: chosen again
     }
   }
-  if (c.record.is_null()) c.record = bulk_choice(plan, jammed, c.config, out);
+  if (c.record.is_null()) {
+    if (!search) {
+      c.unchosen = true;
+      return c;
+    }
+    c.record = bulk_choice(plan, jammed, c.config, out);
+    c.fresh = true;
+  }
   set_phi(c.config, c.record["phi"].get<double>());
   return c;
 }

@@ -32,15 +32,18 @@ inline constexpr const char* kPhiChoiceFile = "phi_choice.json";
 struct ColdStartChoice {
   Config config;
   nlohmann::json record;  // "bulk": what phi_choice.json holds; else null
+  bool fresh = false;     // "bulk": chosen now (to be written), not read back
+  bool unchosen = false;  // "bulk" without a choice on disk and search not allowed
 };
 
 // The cold start of continued point `jammed`, whose folder is under `out`;
 // `records` are the sweep's (the matched rule reads the ramp's summaries).
 // Under "bulk" reads `out/<folder>/cold-start/phi_choice.json` when present,
-// else builds packings (seconds, no shearing) and needs the checkpoint of the
-// point before the jam.
+// else, if `search`, builds packings (seconds each, no shearing; the
+// checkpoint of the point before the jam gives the target), else returns
+// `unchosen`. Throws std::runtime_error when no packing can be built.
 ColdStartChoice choose_cold_start(const SweepPlan& plan, std::size_t jammed,
                                   const std::vector<PointRecord>& records,
-                                  const std::filesystem::path& out);
+                                  const std::filesystem::path& out, bool search);
 
 }  // namespace dilatant::sweep

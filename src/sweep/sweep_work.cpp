@@ -84,9 +84,11 @@ bool SweepWork::load_point(std::size_t i) {
       !std::filesystem::is_regular_file(folder / kColdStart / "summary.json"))
     return true;
   try {
-    ColdStartChoice cold = cold_choice(i);
-    if (inspect_point_folder(cold_point(p, std::move(cold.config)), folder / kColdStart) ==
-        PointState::Done) {
+    // No search here: a cold start without its recorded choice (run under
+    // another rule) is left to confirm_jam, which says what is wrong.
+    ColdStartChoice cold = cold_choice(i, false);
+    if (!cold.unchosen && inspect_point_folder(cold_point(p, std::move(cold.config)),
+                                               folder / kColdStart) == PointState::Done) {
       auto cold_summary = read_summary(folder / kColdStart / "summary.json");
       std::lock_guard lock(mutex_);
       records_[i].cold_start = std::move(cold_summary);
@@ -133,15 +135,16 @@ void SweepWork::run_unit(const WorkUnit& unit, bool inspect_first) {
   for (std::size_t i : unit) run_point(i);
 }
 
-// The cold start of continued point i's jam (cold_start_choice.hpp), from a
-// copy of the records: a "bulk" choice builds packings, without the lock.
-ColdStartChoice SweepWork::cold_choice(std::size_t i) const {
+// The cold start of continued point i's jam (cold_start_choice.hpp). The
+// matched rule reads the ramp's records, copied under the lock; a "bulk"
+// choice builds packings, without it, and only when `search`.
+ColdStartChoice SweepWork::cold_choice(std::size_t i, bool search) const {
   std::vector<PointRecord> records;
-  {
+  if (plan_.settings.cold_start_phi == SweepSettings::ColdStartPhi::Matched) {
     std::lock_guard lock(mutex_);
     records = records_;
   }
-  return choose_cold_start(plan_, i, records, options_.out);
+  return choose_cold_start(plan_, i, records, options_.out, search);
 }
 
 // A continued point that jammed, whose cold start has not run yet.
@@ -155,14 +158,24 @@ bool SweepWork::needs_confirmation(std::size_t i) const {
 // cold-start/ (resumable like a point): a ramp's jam is reported with whether
 // the same stress jams a cold start too.
 void SweepWork::confirm_jam(std::size_t i) {
+  if (halt_.load()) return;
   const auto folder = options_.out / plan_.points[i].folder / kColdStart;
   try {
-    ColdStartChoice choice = cold_choice(i);
+    ColdStartChoice choice = cold_choice(i, true);
     const SweepPoint cold = cold_point(plan_.points[i], std::move(choice.config));
     const PointState state = inspect_point_folder(cold, folder);
-    if (!choice.record.is_null() && !std::filesystem::is_regular_file(folder / kPhiChoiceFile)) {
+    if (choice.fresh) {
       std::filesystem::create_directories(folder);
       write_file_atomically(folder / kPhiChoiceFile, choice.record.dump(2) + "\n");
+      if (!choice.record.value("within_tolerance", false)) {
+        std::lock_guard lock(mutex_);
+        events_.notes.push_back(fmt::format(
+            "dilatant: {}: no packing of the cold start begins within {} of the jam's bulk "
+            "fraction {:.4f}; the closest, {:.4f}, is used ({}/{})",
+            plan_.points[i].folder, kBulkTolerance, choice.record["target_phi_bulk"].get<double>(),
+            choice.record["phi_bulk_start"].get<double>(), kColdStart, kPhiChoiceFile));
+        changed_.notify_all();
+      }
     }
     nlohmann::json summary;
     if (state != PointState::Done) {

@@ -96,7 +96,7 @@ class SweepWork {
   // jam's cold start). Returns whether it is done.
   bool load_point(std::size_t i);
   bool needs_confirmation(std::size_t i) const;
-  ColdStartChoice cold_choice(std::size_t i) const;
+  ColdStartChoice cold_choice(std::size_t i, bool search) const;
   void confirm_jam(std::size_t i);
   void run_point(std::size_t i);
   void finish(std::size_t i, PointStatus status, const std::string& error,

@@ -112,9 +112,8 @@ TEST(WyartCatesCommand, SeedsAreFittedAlonePooledAndPredictAnswersFromThePool) {
   const auto r = dir.run(
       {"analyze", input.string(), "--out", out.string(), "--model", "wyart-cates", "--no-plots"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("the 3 seeds pooled; their own fits (mean +- standard error): phi_0"),
-            std::string::npos)
-      << r.out;
+  EXPECT_NE(r.out.find("the 3 seeds pooled; their own fits: phi_0 "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("(n=3)"), std::string::npos) << r.out;
   const auto j = nlohmann::json::parse(read_text(out / "wyart_cates.json"));
   for (const char* name : {"mu0=1 seed=1", "mu0=1 seed=2", "mu0=1 seed=3", "mu0=1"})
     EXPECT_TRUE(j["samples"][name]["fitted"].get<bool>()) << name;
@@ -124,7 +123,14 @@ TEST(WyartCatesCommand, SeedsAreFittedAlonePooledAndPredictAnswersFromThePool) {
   const std::string model = (out / "wyart_cates.json").string();
   const auto p = dir.run({"predict", "--model", model, "--phi", "0.50", "--json"});
   ASSERT_EQ(p.exit_code, 0) << p.err;
-  EXPECT_EQ(nlohmann::json::parse(p.out)["sample"], "mu0=1");
+  const auto pooled = nlohmann::json::parse(p.out);
+  EXPECT_EQ(pooled["sample"], "mu0=1");
+  // Its boundaries' errors are at least the seeds' standard errors.
+  const auto& spread = j["samples"]["mu0=1"]["seeds"]["spread"];
+  for (const char* key : {"phi_0", "phi_m", "phi_dst"})
+    EXPECT_GE(pooled[std::string(key) + "_err"].get<double>(), spread[key]["sem"].get<double>())
+        << key;
+  EXPECT_EQ(pooled["errors"], "the larger of the pooled fit's and the seeds' standard error");
   const auto one =
       dir.run({"predict", "--model", model, "--phi", "0.50", "--sample", "mu0=1 seed=2", "--json"});
   ASSERT_EQ(one.exit_code, 0) << one.err;

@@ -6,8 +6,9 @@ fitting here).
 Usage: python3 python/dilatant/plots/wyart_cates.py DIR
    or: dilatant.plots.wyart_cates.draw(DIR)
 Reads DIR/wyart_cates.json, wyart_cates_curves.csv and wyart_cates_map.csv;
-writes DIR/wyart_cates.png and .svg: one row per sample (seeds pooled: one row
-for their pooled fit, none for each seed alone; their scatter is in the text),
+writes DIR/wyart_cates.png and .svg: one row per sample (seeds pooled and
+fitted: one row for their pooled fit, none for each seed alone; their scatter
+is in the text),
   left   viscosity vs shear stress, one colour per phi: filled markers = fitted
          points, hollow = not fitted (outside validity, jammed), lines = the
          fitted model (Wyart & Cates, PRL 112, 098302, 2014);
@@ -128,7 +129,8 @@ def draw(out):
     fits = json.loads((out / "wyart_cates.json").read_text())
     curves = read_rows(out / "wyart_cates_curves.csv")
     states = read_rows(out / "wyart_cates_map.csv")
-    pooled = {m for f in fits["samples"].values() for m in f.get("seeds", {}).get("members", [])}
+    pooled = {m for f in fits["samples"].values() if f.get("fitted")
+              for m in f.get("seeds", {}).get("members", [])}
     samples = [s for s in fits["samples"] if s not in pooled]
     fig, axes = plt.subplots(len(samples), 2, figsize=(10.5, 4.3 * len(samples)), squeeze=False,
                              constrained_layout=True)
