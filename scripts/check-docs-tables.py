@@ -55,7 +55,8 @@ A number in prose carries a marker of its own, just above its paragraph:
     <!-- value-source: docs/jamming/shear-flowcurves.csv where=cell.phi=0.64
          where=friction.mu0=1 column=error says="step 143039" -->
 
-`column` names one column of the one row that the `where`s select; `says` is
+`column` names one column of the one row that the `where`s select (a JSON key
+that holds spaces is quoted whole: `column="samples.mu0=0.5 seed=1.phi_0"`); `says` is
 text that must appear in the paragraph below the marker (up to the next blank
 line) and agree with that value: as a number (rounded as above) if it is one,
 else as a part of the file's text.
@@ -416,7 +417,11 @@ def check_table(md, marker_line, marker, table_lines, root, cache, problems):
 
 def check_value(md, marker_line, marker, paragraph, root, cache, problems):
     rows, columns = read_rows(root, marker["file"], cache)
-    ref = parse_spec(marker["column"])
+    # A column named whole (a JSON key with spaces, `samples.mu0=0.5 seed=1.phi_0`,
+    # quoted in the marker), else a SPEC of one column.
+    ref = ([{"skip": False, "name": marker["column"], "cond": [], "factor": None, "optional": False}]
+           if marker["column"] in columns
+           else parse_spec(marker["column"]))
     if not ref or len(ref) != 1 or ref[0]["skip"]:
         raise Problem(f"column= must name one column, not '{marker['column']}'")
     ref = ref[0]

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <array>
 #include <sstream>
+#include <type_traits>
+#include <variant>
 
 namespace dilatant {
 namespace {
@@ -19,15 +21,9 @@ std::string without_comments(const std::string& text) {
 
 // The first key not in `ignored` whose value differs, as "key = a there, b
 // here"; nullopt when there is none.
-std::optional<std::string> first_difference(const std::string& there_text, const toml::table& here,
+std::optional<std::string> first_difference(const toml::table& there, const toml::table& here,
                                             std::string_view here_name,
                                             std::span<const std::string_view> ignored) {
-  toml::table there;
-  try {
-    there = toml::parse(there_text);
-  } catch (const toml::parse_error&) {
-    return "its config.toml is not valid TOML";
-  }
   const auto text = [](const toml::node* n) { return n ? toml_value_text(*n) : "(absent)"; };
   for (const toml::table* a : std::array<const toml::table*, 2>{&here, &there}) {
     for (const auto& [section, node] : *a) {
@@ -56,6 +52,37 @@ void erase_dotted_key(toml::table& table, std::string_view key) {
     section->erase(key.substr(dot + 1));
 }
 
+// The resolved defaults of config's mode: every key at the value a
+// configuration that does not set it gets.
+toml::table mode_defaults(const Config& config) {
+  Config d;
+  d.mode = std::visit(
+      [](const auto& m) -> decltype(Config::mode) { return std::decay_t<decltype(m)>{}; },
+      config.mode);
+  return to_toml(d);
+}
+
+// A key that a run's config.toml lacks and that `here` holds at its default
+// is filled in: a run of an older version, which did not write that key, ran
+// with the behaviour the key's default keeps (a key is added with the default
+// that leaves earlier runs unchanged, e.g. cell.normal_stress in 0.9.0).
+void fill_absent_defaults(toml::table& there, const toml::table& here,
+                          const toml::table& defaults) {
+  for (const auto& [section, node] : here) {
+    const auto* table = node.as_table();
+    if (table == nullptr) continue;
+    for (const auto& [key, value] : *table) {
+      const std::string dotted = fmt::format("{}.{}", section.str(), key.str());
+      if (find_dotted_key(there, dotted) != nullptr) continue;
+      const toml::node* d = find_dotted_key(defaults, dotted);
+      if (d == nullptr || toml_value_text(*d) != toml_value_text(value)) continue;
+      auto* there_section = there.get_as<toml::table>(section.str());
+      if (there_section == nullptr) continue;  // a section the run did not have: a difference
+      there_section->insert(key.str(), value);
+    }
+  }
+}
+
 }  // namespace
 
 const toml::node* find_dotted_key(const toml::table& resolved, std::string_view key) {
@@ -69,25 +96,24 @@ std::optional<std::string> config_difference(const std::string& file_text, const
                                              std::string_view here,
                                              std::span<const std::string_view> ignored) {
   if (without_comments(file_text) == without_comments(resolved_toml(config))) return std::nullopt;
-  if (!ignored.empty()) {
-    // The same configuration once the ignored keys are taken out of both.
-    toml::table there;
-    try {
-      there = toml::parse(file_text);
-    } catch (const toml::parse_error&) {
-      return "its config.toml is not valid TOML";
-    }
-    toml::table mine = config.resolved;
-    for (const std::string_view key : ignored) {
-      erase_dotted_key(there, key);
-      erase_dotted_key(mine, key);
-    }
-    std::ostringstream a, b;
-    a << there;
-    b << mine;
-    if (a.str() == b.str()) return std::nullopt;
+  toml::table there;
+  try {
+    there = toml::parse(file_text);
+  } catch (const toml::parse_error&) {
+    return "its config.toml is not valid TOML";
   }
-  return first_difference(file_text, config.resolved, here, ignored)
+  fill_absent_defaults(there, config.resolved, mode_defaults(config));
+  // The same configuration once the ignored keys are taken out of both.
+  toml::table filled = there, mine = config.resolved;
+  for (const std::string_view key : ignored) {
+    erase_dotted_key(filled, key);
+    erase_dotted_key(mine, key);
+  }
+  std::ostringstream a, b;
+  a << filled;
+  b << mine;
+  if (a.str() == b.str()) return std::nullopt;
+  return first_difference(there, config.resolved, here, ignored)
       .value_or("its config.toml differs");
 }
 

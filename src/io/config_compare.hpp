@@ -16,7 +16,9 @@ namespace dilatant {
 const toml::node* find_dotted_key(const toml::table& resolved, std::string_view key);
 
 // nullopt when `file_text` (a config.toml as written by a run) is `config`'s
-// resolved configuration, keys in `ignored` ("run.strain") aside; else the
+// resolved configuration, keys in `ignored` ("run.strain") aside, and keys the
+// file lacks (a run of an older version) that `config` holds at their
+// defaults; else the
 // first difference, "friction.mu0 = 0.1 there, 0.3 here" with `here` naming
 // the configuration (or why the text cannot be compared).
 std::optional<std::string> config_difference(const std::string& file_text, const Config& config,
