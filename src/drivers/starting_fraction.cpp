@@ -29,12 +29,13 @@ double checkpoint_bulk_fraction(const std::filesystem::path& checkpoint) {
 }
 
 StartingFractionMatch match_starting_bulk(Config config, double target, double tolerance,
-                                          int max_packings) {
+                                          int max_packings, const std::atomic<bool>* stop) {
   StartingFractionMatch best;
   best.phi_bulk_start = std::numeric_limits<double>::quiet_NaN();
   const double phi_0 = config.cell()->phi;
   double estimate = phi_0;
   for (int k = 0; k < max_packings; ++k) {
+    if (stop != nullptr && stop->load()) break;
     const double phi = k == 0 ? phi_0 : estimate + scan_offset(k - 1, tolerance);
     config.cell()->phi = phi;
     double bulk = std::numeric_limits<double>::quiet_NaN();

@@ -6,6 +6,7 @@
 // depends on the packing. A jam's cold start (sweep.cold_start_phi = "bulk",
 // docs/sweeps.md "Ramps to the jam") is asked to begin where the ramp's jammed
 // point began, so its nominal phi is chosen on the packings themselves.
+#include <atomic>
 #include <filesystem>
 #include <vector>
 
@@ -41,7 +42,10 @@ struct StartingFractionMatch {
 // that starts near the target where a root finder would chase the scatter. At most `max_packings`
 // are built; the closest is chosen, and within_tolerance says whether it is within. A phi that does
 // not pack is recorded with a NaN bulk and passed over; if none packs, phi_bulk_start is NaN.
+// `stop` (optional): checked before each packing; once set, the search ends
+// with the packings built so far.
 StartingFractionMatch match_starting_bulk(Config config, double target, double tolerance,
-                                          int max_packings);
+                                          int max_packings,
+                                          const std::atomic<bool>* stop = nullptr);
 
 }  // namespace dilatant

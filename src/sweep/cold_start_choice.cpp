@@ -48,12 +48,12 @@ void match_time_averaged_bulk(const SweepPlan& plan, std::size_t i,
 }
 
 nlohmann::json bulk_choice(const SweepPlan& plan, std::size_t i, const Config& config,
-                           const std::filesystem::path& out) {
+                           const std::filesystem::path& out, const std::atomic<bool>* stop) {
   const SweepPoint& before = plan.points[*plan.points[i].continues_from];
   const auto checkpoint = out / before.folder / "checkpoint.bin";
   const double target = checkpoint_bulk_fraction(checkpoint);
   const StartingFractionMatch m =
-      match_starting_bulk(config, target, kBulkTolerance, kBulkMaxPackings);
+      match_starting_bulk(config, target, kBulkTolerance, kBulkMaxPackings, stop);
   if (!std::isfinite(m.phi_bulk_start))
     throw std::runtime_error(fmt::format(
         "none of the {} packings tried for the cold start (nominal phi from {:.4f}) could be "
@@ -76,7 +76,8 @@ nlohmann::json bulk_choice(const SweepPlan& plan, std::size_t i, const Config& c
 
 ColdStartChoice choose_cold_start(const SweepPlan& plan, std::size_t jammed,
                                   const std::vector<PointRecord>& records,
-                                  const std::filesystem::path& out, bool search) {
+                                  const std::filesystem::path& out, bool search,
+                                  const std::atomic<bool>* stop) {
   const SweepPoint& p = plan.points[jammed];
   ColdStartChoice c{p.cold_start.value_or(p.config), nullptr};
   if (!p.continues_from || c.config.cell() == nullptr) return c;
@@ -103,7 +104,7 @@ ColdStartChoice choose_cold_start(const SweepPlan& plan, std::size_t jammed,
       c.unchosen = true;
       return c;
     }
-    c.record = bulk_choice(plan, jammed, c.config, out);
+    c.record = bulk_choice(plan, jammed, c.config, out, stop);
     c.fresh = true;
   }
   set_phi(c.config, c.record["phi"].get<double>());

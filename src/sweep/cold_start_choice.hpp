@@ -13,6 +13,7 @@
 //            ramp's history. How it was chosen is kept beside the cold start
 //            (cold-start/phi_choice.json) and is read back, not redone, when a
 //            sweep resumes.
+#include <atomic>
 #include <cstddef>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -41,9 +42,12 @@ struct ColdStartChoice {
 // Under "bulk" reads `out/<folder>/cold-start/phi_choice.json` when present,
 // else, if `search`, builds packings (seconds each, no shearing; the
 // checkpoint of the point before the jam gives the target), else returns
-// `unchosen`. Throws std::runtime_error when no packing can be built.
+// `unchosen`. Throws std::runtime_error when no packing can be built; `stop`
+// (the sweep's halt flag) ends the search early, and the caller, which checks
+// it, then runs nothing.
 ColdStartChoice choose_cold_start(const SweepPlan& plan, std::size_t jammed,
                                   const std::vector<PointRecord>& records,
-                                  const std::filesystem::path& out, bool search);
+                                  const std::filesystem::path& out, bool search,
+                                  const std::atomic<bool>* stop = nullptr);
 
 }  // namespace dilatant::sweep

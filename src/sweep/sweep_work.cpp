@@ -144,7 +144,7 @@ ColdStartChoice SweepWork::cold_choice(std::size_t i, bool search) const {
     std::lock_guard lock(mutex_);
     records = records_;
   }
-  return choose_cold_start(plan_, i, records, options_.out, search);
+  return choose_cold_start(plan_, i, records, options_.out, search, &halt_);
 }
 
 // A continued point that jammed, whose cold start has not run yet.
@@ -162,6 +162,7 @@ void SweepWork::confirm_jam(std::size_t i) {
   const auto folder = options_.out / plan_.points[i].folder / kColdStart;
   try {
     ColdStartChoice choice = cold_choice(i, true);
+    if (halt_.load()) return;  // stopped during the search: its choice is not kept
     const SweepPoint cold = cold_point(plan_.points[i], std::move(choice.config));
     const PointState state = inspect_point_folder(cold, folder);
     if (choice.fresh) {
@@ -195,6 +196,7 @@ void SweepWork::confirm_jam(std::size_t i) {
     records_[i].cold_start_choice = std::move(choice.record);
     changed(i, true);
   } catch (const std::exception& e) {
+    if (halt_.load()) return;  // stopped: it runs again on the next invocation
     std::lock_guard lock(mutex_);
     events_.notes.push_back(
         fmt::format("dilatant: the cold start confirming the jam of {} failed: {}",

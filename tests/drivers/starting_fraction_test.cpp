@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -58,6 +59,15 @@ TEST(StartingFraction, TheSearchScansAroundTheOffsetEstimateAndKeepsTheClosest) 
   for (const auto& [phi, bulk] : m.tried)
     EXPECT_LE(std::abs(m.phi_bulk_start - target), std::abs(bulk - target)) << phi;
   EXPECT_EQ(m.within_tolerance, std::abs(m.phi_bulk_start - target) <= kTolerance);
+}
+
+// A stop request (the sweep's Ctrl-C) ends the search before the next packing.
+TEST(StartingFraction, AStopRequestEndsTheSearch) {
+  const Config c = cell({"cell.size=[8.0, 6.0, 12.0]", "cell.phi=0.58"});
+  const std::atomic<bool> stop{true};
+  const StartingFractionMatch m = match_starting_bulk(c, 0.5, 1e-3, 6, &stop);
+  EXPECT_TRUE(m.tried.empty());
+  EXPECT_FALSE(m.within_tolerance);
 }
 
 }  // namespace
