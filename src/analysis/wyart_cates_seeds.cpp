@@ -1,9 +1,9 @@
 #include "analysis/wyart_cates_seeds.hpp"
 
-#include <cmath>
-#include <limits>
 #include <map>
 #include <sstream>
+
+#include "measure/sample_mean.hpp"
 
 namespace dilatant::analysis {
 namespace {
@@ -42,24 +42,8 @@ std::vector<SeedGroup> seed_groups(const std::vector<std::string>& samples) {
 }
 
 SeedSpread seed_spread(std::string name, const std::vector<double>& values) {
-  SeedSpread s;
-  s.name = std::move(name);
-  s.n = values.size();
-  if (s.n == 0) {
-    s.mean = s.sd = s.sem = std::numeric_limits<double>::quiet_NaN();
-    return s;
-  }
-  for (const double v : values) s.mean += v;
-  s.mean /= static_cast<double>(s.n);
-  if (s.n < 2) {
-    s.sd = s.sem = std::numeric_limits<double>::quiet_NaN();
-    return s;
-  }
-  double ss = 0.0;
-  for (const double v : values) ss += (v - s.mean) * (v - s.mean);
-  s.sd = std::sqrt(ss / static_cast<double>(s.n - 1));
-  s.sem = s.sd / std::sqrt(static_cast<double>(s.n));
-  return s;
+  const SampleMean m = sample_mean(values);
+  return {std::move(name), m.n, m.mean, m.sd, m.sem};
 }
 
 }  // namespace dilatant::analysis

@@ -15,6 +15,7 @@
 #include "io/atomic_file.hpp"
 #include "io/output_folder.hpp"
 #include "measure/run_cost.hpp"
+#include "measure/sample_mean.hpp"
 
 namespace dilatant {
 
@@ -35,19 +36,15 @@ struct Sample {
   std::vector<double> phi_at;  // at kExclusions
 };
 
+// The sediment's fraction over its samples; with one sample the error is
+// unknown: 0 here, null in summary.json.
 struct MeanError {
   double mean = 0.0, error = 0.0;
 };
 
 MeanError mean_error(const std::vector<double>& x) {
-  MeanError m;
-  const double n = double(x.size());
-  for (double v : x) m.mean += v / n;
-  if (x.size() < 2) return m;
-  double var = 0.0;
-  for (double v : x) var += (v - m.mean) * (v - m.mean) / (n - 1.0);
-  m.error = std::sqrt(var / n);
-  return m;
+  const SampleMean m = sample_mean(x);
+  return {x.empty() ? 0.0 : m.mean, x.size() < 2 ? 0.0 : m.sem};
 }
 
 Sample run_sample(const Config& config, int index, bool progress) {
