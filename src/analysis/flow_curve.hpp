@@ -9,6 +9,7 @@
 //   simulations      the paper's units: stress eta_f^2/(rho_p R^2),
 //                    rate eta_f/(rho_p R^2), viscosity eta_f
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +26,11 @@ struct FlowPoint {
   bool valid = true;            // false: outside the model's validity; drawn, never fitted
   bool jammed = false;          // the simulated cell stopped: evidence of DST
   std::size_t line = 0;         // line in the source file, for messages
+  // The suspension's own volume fraction at this point, where the source
+  // measured one (a sweep's phi_bulk: a wall cell's bulk dilates away from the
+  // nominal phi, a Lees–Edwards box's realised radii shift it slightly); NaN
+  // where only the curve's nominal phi is known (rheometer data).
+  double phi_measured = std::numeric_limits<double>::quiet_NaN();
 };
 
 // A fit window chosen by the user, in stress units of the curve.

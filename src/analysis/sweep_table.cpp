@@ -35,6 +35,8 @@ struct Columns {
   // curve eta(gamma_dot) at fixed phi, and is left out (docs/sweeps.md
   // "Pressure-imposed sweeps").
   std::optional<std::size_t> control;
+  // `dilatant sweep`: the bulk fraction the point measured (FlowPoint::phi_measured).
+  std::optional<std::size_t> phi_bulk;
   std::size_t count;
 };
 
@@ -60,7 +62,8 @@ class SweepReader {
                             name));
     return Columns{*find("phi"),   *find("mu0"),    *find("shear_stress"), *find("gamma_dot"),
                    *find("valid"), *find("jammed"), find("gamma_dot_err"), find("status"),
-                   find("sample"), find("eta"),     find("control"),       fields.size()};
+                   find("sample"), find("eta"),     find("control"),       find("phi_bulk"),
+                   fields.size()};
   }
 
   double number(std::size_t line, const std::vector<std::string>& f, std::size_t column,
@@ -127,6 +130,11 @@ class SweepReader {
       p.shear_rate_err = number(line, f, *c.rate_err, "gamma_dot_err");
       if (p.shear_rate_err < 0.0)
         fail(line, fmt::format("column 'gamma_dot_err': {} must be >= 0", p.shear_rate_err));
+    }
+    if (c.phi_bulk && !f[*c.phi_bulk].empty()) {
+      p.phi_measured = number(line, f, *c.phi_bulk, "phi_bulk");
+      if (!(p.phi_measured > 0.0 && p.phi_measured < 0.74))
+        fail(line, fmt::format("column 'phi_bulk': {} must be in (0, 0.74)", p.phi_measured));
     }
     p.viscosity = p.shear_rate > 0.0 ? p.shear_stress / p.shear_rate
                                      : std::numeric_limits<double>::quiet_NaN();

@@ -107,9 +107,18 @@ class WyartCatesProblem {
   int beta_slot_ = -1;
 };
 
+// The first fitted point without a measured fraction, or null.
+const FlowPoint* fitted_point_without_bulk(const std::vector<FlowCurve>& curves) {
+  for (const FlowCurve& c : curves)
+    for (const FlowPoint& p : c.points)
+      if (wyart_cates_fits_point(p) && !std::isfinite(p.phi_measured)) return &p;
+  return nullptr;
+}
+
 // The points that enter the fit, with s_i (see the header).
 std::vector<LogViscosityPoint> points_to_fit(const std::vector<FlowCurve>& curves,
-                                             const WyartCatesSettings& settings, bool& weighted) {
+                                             const WyartCatesSettings& settings, bool bulk,
+                                             bool& weighted) {
   std::vector<LogViscosityPoint> data;
   weighted = true;
   for (const FlowCurve& c : curves) {
@@ -117,8 +126,8 @@ std::vector<LogViscosityPoint> points_to_fit(const std::vector<FlowCurve>& curve
       if (!wyart_cates_fits_point(p)) continue;
       const double relative = p.shear_rate > 0.0 ? p.shear_rate_err / p.shear_rate : 0.0;
       weighted = weighted && relative > 0.0;
-      data.push_back(
-          {c.phi, p.shear_stress, std::log(p.viscosity), std::max(relative, settings.noise_floor)});
+      data.push_back({bulk ? p.phi_measured : c.phi, p.shear_stress, std::log(p.viscosity),
+                      std::max(relative, settings.noise_floor)});
     }
   }
   if (!weighted)
@@ -193,20 +202,63 @@ WyartCatesParameters WyartCatesFit::model() const {
   return {phi_0.value, phi_m.value, sigma_star.value, A.value, alpha.value, beta.value};
 }
 
+const char* phi_basis_name(WyartCatesSettings::Phi phi) {
+  switch (phi) {
+    case WyartCatesSettings::Phi::Nominal:
+      return "nominal";
+    case WyartCatesSettings::Phi::Bulk:
+      return "bulk";
+    case WyartCatesSettings::Phi::Auto:
+      break;
+  }
+  return "auto";
+}
+
+double fitted_phi(const FlowCurve& curve, bool bulk) {
+  if (!bulk) return curve.phi;
+  for (const bool fitted_only : {true, false}) {
+    double sum = 0.0;
+    int n = 0;
+    for (const FlowPoint& p : curve.points)
+      if (std::isfinite(p.phi_measured) && (!fitted_only || wyart_cates_fits_point(p))) {
+        sum += p.phi_measured;
+        ++n;
+      }
+    if (n > 0) return sum / n;
+  }
+  return curve.phi;
+}
+
 WyartCatesOutcome fit_wyart_cates(const std::vector<FlowCurve>& curves,
                                   const WyartCatesSettings& settings) {
   WyartCatesOutcome out;
+  const FlowPoint* without = fitted_point_without_bulk(curves);
+  if (settings.phi == WyartCatesSettings::Phi::Bulk && without) {
+    out.why_not = fmt::format(
+        "the fit in the bulk fraction needs every fitted point's phi_bulk; the point of line {} "
+        "has none",
+        without->line);
+    return out;
+  }
+  const bool bulk = settings.phi == WyartCatesSettings::Phi::Bulk ||
+                    (settings.phi == WyartCatesSettings::Phi::Auto && !without);
   bool weighted = false;
-  std::vector<LogViscosityPoint> data = points_to_fit(curves, settings, weighted);
-  std::vector<double> phis;
-  for (const LogViscosityPoint& d : data)
-    if (std::find(phis.begin(), phis.end(), d.phi) == phis.end()) phis.push_back(d.phi);
+  std::vector<LogViscosityPoint> data = points_to_fit(curves, settings, bulk, weighted);
+  // Curves at distinct nominal phi: with the measured fraction every point
+  // has its own, but the growth with phi is still told by the curves.
+  std::vector<double> nominal, phis;
+  for (const FlowCurve& c : curves) {
+    if (std::none_of(c.points.begin(), c.points.end(), wyart_cates_fits_point)) continue;
+    if (std::find(nominal.begin(), nominal.end(), c.phi) == nominal.end()) nominal.push_back(c.phi);
+    const double phi = fitted_phi(c, bulk);
+    if (std::find(phis.begin(), phis.end(), phi) == phis.end()) phis.push_back(phi);
+  }
   std::sort(phis.begin(), phis.end());
-  if (phis.size() < 2) {
+  if (nominal.size() < 2) {
     out.why_not = fmt::format(
         "flowing points at {} volume fraction{}; the fit needs flow curves at 2 or more phi "
         "(phi_0 and A are told apart only by how the viscosity grows with phi)",
-        phis.size(), phis.size() == 1 ? "" : "s");
+        nominal.size(), nominal.size() == 1 ? "" : "s");
     return out;
   }
   const WyartCatesProblem problem(std::move(data), settings);
@@ -231,7 +283,8 @@ WyartCatesOutcome fit_wyart_cates(const std::vector<FlowCurve>& curves,
   WyartCatesFit fit;
   fit.points = points;
   fit.parameters = problem.parameters();
-  fit.curves = phis.size();
+  fit.curves = nominal.size();
+  fit.phi_bulk = bulk;
   fit.phi = phis;
   fit.weighted = weighted;
   fit.chi2 = r.squaredNorm();

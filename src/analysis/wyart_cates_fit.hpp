@@ -11,6 +11,12 @@
 //
 //     r_i = (ln eta_i - ln eta_WC(sigma_i, phi_i)) / s_i.
 //
+// phi_i is the point's own measured fraction where the data have one (a
+// sweep's phi_bulk: the bulk of a wall cell dilates 0.01-0.02 below its nominal
+// phi, and with the stress; WyartCatesSettings::phi), else its curve's nominal
+// phi. The model relates the viscosity to the fraction the suspension has, so
+// a fit in nominal phi of a wall cell shifts phi_0 and phi_m by the dilation.
+//
 // In logarithms because the viscosity spans decades and its scatter is
 // relative. s_i is the relative error of the shear rate (= that of eta under an
 // imposed stress) when every point has one (a sweep's gamma_dot_err; at least
@@ -47,15 +53,24 @@ struct WyartCatesSettings {
   bool fit_beta = false;
   // Relative error below which no point is trusted (as AnalysisSettings::noise_floor).
   double noise_floor = 0.005;
+  // The volume fraction fitted: each point's measured one (Bulk: a sweep's
+  // phi_bulk), its curve's nominal phi (Nominal), or Bulk when every fitted
+  // point has one and Nominal otherwise (Auto: rheometer data have none).
+  enum class Phi { Auto, Nominal, Bulk };
+  Phi phi = Phi::Auto;
 };
+
+// "auto", "nominal", "bulk".
+const char* phi_basis_name(WyartCatesSettings::Phi phi);
 
 struct WyartCatesFit {
   Estimate phi_0, phi_m, sigma_star, A, alpha, beta;  // err NaN when held fixed
   double chi2 = 0.0;
   std::size_t points = 0;
   std::size_t parameters = 0;
-  std::size_t curves = 0;   // flow curves with fitted points
-  std::vector<double> phi;  // their volume fractions, ascending
+  std::size_t curves = 0;   // nominal volume fractions with fitted points
+  bool phi_bulk = false;    // fitted in the points' measured fractions (else nominal)
+  std::vector<double> phi;  // the curves' fitted_phi, distinct, ascending
   double stress_low = 0.0;  // the fitted points' stress range
   double stress_high = 0.0;
   bool weighted = false;             // s_i from the rate errors; else 1
@@ -77,6 +92,11 @@ struct WyartCatesOutcome {
 
 // Whether a point enters the fit: valid, flowing, with a positive viscosity.
 bool wyart_cates_fits_point(const FlowPoint& p);
+
+// A curve's volume fraction in the fit's terms: its nominal phi, or (bulk) the
+// mean measured fraction of its fitted points, of all its points when none is
+// fitted, its nominal phi when none has one. For tables and the overlay.
+double fitted_phi(const FlowCurve& curve, bool bulk);
 
 // The curves of one sample (their `sample` names are not read).
 WyartCatesOutcome fit_wyart_cates(const std::vector<FlowCurve>& curves,

@@ -134,6 +134,10 @@ FittedWyartCates read_fitted_wyart_cates(const std::filesystem::path& file,
     f.errors = "the larger of the pooled fit's and the seeds' standard error";
   }
   f.units = j.value("units", Json::object());
+  f.phi_basis = s.value("phi_basis", "nominal");
+  if (f.phi_basis != "bulk" && f.phi_basis != "nominal")
+    throw InputError(fmt::format("{}: sample {}: phi_basis '{}' is neither bulk nor nominal",
+                                 file.string(), name, f.phi_basis));
   return f;
 }
 
@@ -144,6 +148,7 @@ Json wyart_cates_prediction(const FittedWyartCates& fit, double phi, std::option
   j["model_file"] = fit.file;
   j["sample"] = fit.sample;
   j["phi"] = phi;
+  j["phi_basis"] = fit.phi_basis;
   j["regime"] = flow_curve_regime(p, phi);
   j["phi_dst"] = or_null_value(fit.phi_dst.value);
   j["phi_dst_err"] = or_null_value(fit.phi_dst.err);

@@ -26,6 +26,9 @@ struct FittedWyartCates {
   // What the boundaries' errors are: the fit's, or for a pooled fit of seeds
   // the larger of the fit's and the seeds' standard error.
   std::string errors = "the fit's standard errors";
+  // The volume fraction the fit was made in, and so the one --phi is read as:
+  // "bulk" (a sweep's measured phi_bulk) or "nominal" (older files: nominal).
+  std::string phi_basis = "nominal";
 };
 
 // The names of the fitted samples in a wyart_cates.json; InputError when the

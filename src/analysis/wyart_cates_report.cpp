@@ -114,6 +114,7 @@ Json wyart_cates_sample_json(const WyartCatesSample& s) {
                             : "uniform in ln eta; the scatter is measured from the residuals";
   j["fitted_points"] = f.points;
   j["fitted_curves"] = f.curves;
+  j["phi_basis"] = f.phi_bulk ? "bulk" : "nominal";
   j["phi"] = f.phi;
   j["stress_range"] = {f.stress_low, f.stress_high};
   Json corr = Json::object();
@@ -246,7 +247,8 @@ std::string wyart_cates_json(const WyartCatesReport& r) {
                    {"fit_alpha", r.settings.fit_alpha},
                    {"beta", r.settings.beta},
                    {"fit_beta", r.settings.fit_beta},
-                   {"noise_floor", r.settings.noise_floor}};
+                   {"noise_floor", r.settings.noise_floor},
+                   {"phi", phi_basis_name(r.settings.phi)}};
   Json samples = Json::object();
   for (const auto& s : r.samples) samples[s.sample] = wyart_cates_sample_json(s);
   j["samples"] = samples;
@@ -257,23 +259,27 @@ std::string wyart_cates_curves_csv(const WyartCatesReport& r) {
   std::string out = "sample,phi,kind,shear_stress,shear_rate,viscosity,fitted\n";
   for (const auto& s : r.samples) {
     std::vector<double> drawn;  // a pooled sample's model line once per phi
+    const bool bulk = s.outcome.fit && s.outcome.fit->phi_bulk;
     for (const FlowCurve& c : r.curves) {
       if (!s.holds(c.sample)) continue;
+      // In the fit's terms: a curve fitted in its bulk fraction is labelled,
+      // and its model line drawn, at the mean of its points' (fitted_phi).
+      const double phi = fitted_phi(c, bulk);
       for (const FlowPoint& p : c.points)
-        out += fmt::format("{},{},data,{},{},{},{}\n", s.sample, csv_cell(c.phi),
+        out += fmt::format("{},{},data,{},{},{},{}\n", s.sample, csv_cell(phi),
                            csv_cell(p.shear_stress), csv_cell(p.shear_rate), csv_cell(p.viscosity),
                            wyart_cates_fits_point(p));
-      if (!s.outcome.fit || std::find(drawn.begin(), drawn.end(), c.phi) != drawn.end()) continue;
-      drawn.push_back(c.phi);
+      if (!s.outcome.fit || std::find(drawn.begin(), drawn.end(), phi) != drawn.end()) continue;
+      drawn.push_back(phi);
       const WyartCatesFit& f = *s.outcome.fit;
       const WyartCatesParameters m = f.model();
       const double lo = f.stress_low / kOverlayMargin, hi = f.stress_high * kOverlayMargin;
       for (int k = 0; k < kOverlayNodes; ++k) {
         const double sigma = lo * std::pow(hi / lo, k / (kOverlayNodes - 1.0));
-        const double eta = wyart_cates_viscosity(m, c.phi, sigma);
+        const double eta = wyart_cates_viscosity(m, phi, sigma);
         if (!std::isfinite(eta)) break;  // jammed: the model curve ends
-        out += fmt::format("{},{},model,{},{},{},false\n", s.sample, csv_cell(c.phi),
-                           csv_cell(sigma), csv_cell(sigma / eta), csv_cell(eta));
+        out += fmt::format("{},{},model,{},{},{},false\n", s.sample, csv_cell(phi), csv_cell(sigma),
+                           csv_cell(sigma / eta), csv_cell(eta));
       }
     }
   }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <utility>
 
@@ -70,6 +71,18 @@ CLI::App* add_analyze_command(CLI::App& app, AnalyzeCommandArgs& args) {
                   "Wyart-Cates: exponent of f = exp(-(sigma*/sigma)^beta), held (or the start "
                   "with --fit-beta; > 0)")
       ->capture_default_str()
+      ->needs(model);
+  cmd->add_option("--wc-phi", wc.phi,
+                  "Wyart-Cates: the volume fraction fitted: bulk (each point's measured "
+                  "phi_bulk, of a sweep table), nominal (the curve's phi), or auto (bulk when "
+                  "every fitted point has one)")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, analysis::WyartCatesSettings::Phi>{
+              {"auto", analysis::WyartCatesSettings::Phi::Auto},
+              {"nominal", analysis::WyartCatesSettings::Phi::Nominal},
+              {"bulk", analysis::WyartCatesSettings::Phi::Bulk}},
+          CLI::ignore_case))
+      ->default_str("auto")
       ->needs(model);
   cmd->add_flag("--fit-alpha", wc.fit_alpha, "Wyart-Cates: fit alpha too")->needs(model);
   cmd->add_flag("--fit-beta", wc.fit_beta, "Wyart-Cates: fit beta too")->needs(model);
@@ -169,10 +182,11 @@ void print_model_summary(const analysis::WyartCatesReport& r) {
     if (st.fit_beta) exponents += ", beta = " + with_error(f->beta, "{:.3g}");
     std::cout << fmt::format(
         "    {}: phi_0 = {}, phi_m = {}, sigma* = {}, A = {}{}, chi2/dof = {:.3g}; DST from phi "
-        "{}, shear jamming from phi_m\n",
+        "{}, shear jamming from phi_m; phi {}\n",
         s.sample, with_error(f->phi_0, "{:.4f}"), with_error(f->phi_m, "{:.4f}"),
         with_error(f->sigma_star, "{:.4g}"), with_error(f->A, "{:.4g}"), exponents,
-        f->chi2_per_dof(), with_error({s.onset.phi, s.onset_phi_err}, "{:.4f}"));
+        f->chi2_per_dof(), with_error({s.onset.phi, s.onset_phi_err}, "{:.4f}"),
+        f->phi_bulk ? "is each point's measured phi_bulk" : "is each curve's nominal phi");
     if (s.members.empty()) continue;
     std::cout << fmt::format("      the {} seeds pooled; their own fits: {}\n", s.members.size(),
                              seed_spread_text(s.seed_spreads));

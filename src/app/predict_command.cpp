@@ -139,12 +139,12 @@ int predict_from_model(const PredictCommandArgs& args) {
     return 0;
   }
   std::cout << fmt::format(
-      "{} (phi {} against phi_DST = {} +- {}, phi_m = {} +- {}, phi_0 = {} +- {}{}; source: "
+      "{} ({}phi {} against phi_DST = {} +- {}, phi_m = {} +- {}, phi_0 = {} +- {}{}; source: "
       "Wyart-Cates fit {}, sample {})\n",
-      j["regime"].get<std::string>(), args.phi, or_none(j["phi_dst"], "{:.4f}"),
-      or_none(j["phi_dst_err"], "{:.2g}"), or_none(j["phi_m"], "{:.4f}"),
-      or_none(j["phi_m_err"], "{:.2g}"), or_none(j["phi_0"], "{:.4f}"),
-      or_none(j["phi_0_err"], "{:.2g}"),
+      j["regime"].get<std::string>(), fit.phi_basis == "bulk" ? "bulk " : "", args.phi,
+      or_none(j["phi_dst"], "{:.4f}"), or_none(j["phi_dst_err"], "{:.2g}"),
+      or_none(j["phi_m"], "{:.4f}"), or_none(j["phi_m_err"], "{:.2g}"),
+      or_none(j["phi_0"], "{:.4f}"), or_none(j["phi_0_err"], "{:.2g}"),
       j["uncertain"].get<bool>() ? fmt::format("; within {:.1f} sigma of a boundary: uncertain",
                                                j["margin_sigma"].get<double>())
                                  : "",

@@ -104,6 +104,26 @@ struct BadSweep {
   std::string problem;
 };
 
+// A sweep's phi_bulk (the fraction the point measured) is each point's
+// phi_measured; a table without it, or an empty field, leaves NaN.
+TEST(SweepTable, ReadsEachPointsMeasuredBulkFraction) {
+  test::TempDir dir;
+  const auto file = dir.write("flowcurves.csv",
+                              "phi,mu0,shear_stress,gamma_dot,valid,jammed,phi_bulk\n"
+                              "0.62,0.1,1,0.02,true,false,0.6097\n"
+                              "0.62,0.1,10,0.1,true,false,\n"
+                              "0.62,0.1,100,0,true,true,0.6121\n");
+  const AnalysisInput in = read_sweep_table(file);
+  ASSERT_EQ(in.curves.size(), 1u);
+  const auto& p = in.curves[0].points;
+  ASSERT_EQ(p.size(), 3u);
+  EXPECT_EQ(in.curves[0].phi, 0.62);
+  EXPECT_DOUBLE_EQ(p[0].phi_measured, 0.6097);
+  EXPECT_TRUE(std::isnan(p[1].phi_measured));
+  EXPECT_DOUBLE_EQ(p[2].phi_measured, 0.6121);  // a jam has its packing's fraction
+  EXPECT_TRUE(std::isnan(load_analysis_input(kSweep).curves[0].points[0].phi_measured));
+}
+
 constexpr const char* kHeader = "phi,mu0,shear_stress,gamma_dot,gamma_dot_err,eta,valid,jammed\n";
 
 std::vector<BadSweep> bad_sweeps() {
@@ -126,6 +146,12 @@ std::vector<BadSweep> bad_sweeps() {
        "phi,mu0,shear_stress,gamma_dot,valid,jammed,control\n0.58,0.4,0.3,0.1,true,false,"
        "pressure\n0.58,0.4,0.5,0.1,true,false,pressure\n",
        1, "no flow curve: the 2 finished points are pressure-controlled"},
+      {"PhiBulkOutOfRange",
+       "phi,mu0,shear_stress,gamma_dot,valid,jammed,phi_bulk\n0.5,0.1,1,1,true,false,0.9\n", 2,
+       "column 'phi_bulk': 0.9 must be in (0, 0.74)"},
+      {"PhiBulkNotANumber",
+       "phi,mu0,shear_stress,gamma_dot,valid,jammed,phi_bulk\n0.5,0.1,1,1,true,false,x\n", 2,
+       "column 'phi_bulk': 'x' is not a number"},
       {"NaN", h + "0.5,0.1,nan,1,0,1,true,false\n", 1, "missing value: line 2"},
       {"Infinite", h + "0.5,0.1,inf,1,0,1,true,false\n", 2, "not a finite number"},
       // eta 2.50 where shear_stress / gamma_dot = 2.00: 25%, its digits allow 1.6%.

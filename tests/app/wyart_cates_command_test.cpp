@@ -10,6 +10,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <random>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -29,19 +30,28 @@ const analysis::WyartCatesParameters kTruth{0.64, 0.56, 2.0, 1.3, 2.0, 1.0};
 // phi at each of `phis`, 0.02 to 200 in stress, 5% log-normal noise on the rate.
 // With `seeds` > 0, that many packings of each point, labelled in a `sample`
 // column as a sweep over cell.seed labels them ("mu0=1 seed=2").
-fs::path write_sweep(const fs::path& dir, const std::vector<double>& phis, int seeds = 0) {
+// With `dilation` > 0, the points are drawn at `phis` but written at nominal
+// phi + dilation, with `phis` in a phi_bulk column (a wall cell's bulk).
+fs::path write_sweep(const fs::path& dir, const std::vector<double>& phis, int seeds = 0,
+                     double dilation = 0.0) {
   std::mt19937_64 rng(11);
   std::normal_distribution<double> normal(0.0, 1.0);
   const fs::path file = dir / "flowcurves.csv";
   std::ofstream out(file);
-  out << "phi,mu0,shear_stress,gamma_dot,gamma_dot_err,valid,jammed"
-      << (seeds > 0 ? ",sample\n" : "\n");
+  out << "phi,mu0,shear_stress,gamma_dot,gamma_dot_err,valid,jammed" << (seeds > 0 ? ",sample" : "")
+      << (dilation > 0.0 ? ",phi_bulk\n" : "\n");
   for (int seed = 1; seed <= std::max(seeds, 1); ++seed)
-    for (const double phi : phis)
+    for (const double drawn : phis)
       for (int k = 0; k <= 24; ++k) {
-        const std::string sample = seeds > 0 ? ",mu0=1 seed=" + std::to_string(seed) : "";
+        const double phi = drawn + dilation;
+        // Built in a stream: GCC 12 reports a false -Wstringop-overflow on
+        // "," + std::string here (GCC bug 105329).
+        std::ostringstream tail;
+        if (seeds > 0) tail << ",mu0=1 seed=" << seed;
+        if (dilation > 0.0) tail << "," << drawn;
+        const std::string sample = tail.str();
         const double sigma = 0.02 * std::pow(10.0, k / 6.0);
-        const double eta = analysis::wyart_cates_viscosity(kTruth, phi, sigma);
+        const double eta = analysis::wyart_cates_viscosity(kTruth, drawn, sigma);
         if (!std::isfinite(eta)) {
           out << phi << ",1," << sigma << ",0,,true,true" << sample << "\n";
           continue;
@@ -87,6 +97,7 @@ TEST(WyartCatesCommand, AnalyzeFitsWritesTheFilesAndPredictAnswersFromThem) {
   ASSERT_EQ(p.exit_code, 0) << p.err;
   const auto answer = nlohmann::json::parse(p.out);
   EXPECT_EQ(answer["source"], "wyart-cates fit");
+  EXPECT_EQ(answer["phi_basis"], "nominal");  // the table has no phi_bulk
   EXPECT_EQ(answer["regime"], "dst");
   EXPECT_EQ(answer["state"], "turns_back");
   const auto text = dir.run({"predict", "--model", model, "--phi", "0.50"});
@@ -137,6 +148,37 @@ TEST(WyartCatesCommand, SeedsAreFittedAlonePooledAndPredictAnswersFromThePool) {
   EXPECT_EQ(nlohmann::json::parse(one.out)["sample"], "mu0=1 seed=2");
 }
 
+// A table with phi_bulk is fitted in it (the truth comes back although the
+// nominal phi is 0.01 higher), and predict reads --phi as a bulk fraction;
+// --wc-phi nominal fits the nominal phi, and phi_m moves up by the dilation.
+TEST(WyartCatesCommand, ASweepsMeasuredBulkFractionIsWhatIsFitted) {
+  test::CliDir dir;
+  const fs::path input = write_sweep(dir.path(), {0.45, 0.50, 0.53, 0.55, 0.575}, 0, 0.01);
+  const fs::path out = dir.path() / "out";
+  const auto r = dir.run({"analyze", input.string(), "--out", out.string(), "--model",
+                          "wyart-cates", "--no-plots", "-q"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(read_text(out / "wyart_cates.json"));
+  EXPECT_EQ(j["settings"]["phi"], "auto");
+  const auto& s = j["samples"]["mu0=1"];
+  ASSERT_TRUE(s["fitted"].get<bool>()) << s.dump();
+  EXPECT_EQ(s["phi_basis"], "bulk");
+  EXPECT_LT(std::abs(s["phi_m"].get<double>() - kTruth.phi_m), 4 * s["phi_m_err"].get<double>());
+  const auto text =
+      dir.run({"predict", "--model", (out / "wyart_cates.json").string(), "--phi", "0.50"});
+  EXPECT_EQ(text.out.rfind("cst (bulk phi 0.5", 0), 0u) << text.out << text.err;
+
+  const fs::path nominal = dir.path() / "nominal";
+  const auto n = dir.run({"analyze", input.string(), "--out", nominal.string(), "--model",
+                          "wyart-cates", "--wc-phi", "nominal", "--no-plots", "-q"});
+  ASSERT_EQ(n.exit_code, 0) << n.err;
+  const auto jn = nlohmann::json::parse(read_text(nominal / "wyart_cates.json"));
+  const auto& sn = jn["samples"]["mu0=1"];
+  ASSERT_TRUE(sn["fitted"].get<bool>()) << sn.dump();
+  EXPECT_EQ(sn["phi_basis"], "nominal");
+  EXPECT_NEAR(sn["phi_m"].get<double>() - s["phi_m"].get<double>(), 0.01, 0.002);
+}
+
 TEST(WyartCatesCommand, DataThatCannotBeFittedExitTwoWithTheReason) {
   test::CliDir dir;
   const fs::path input = write_sweep(dir.path(), {0.53});
@@ -161,6 +203,8 @@ TEST(WyartCatesCommand, BadOptionsExitTwoWithOneLine) {
        "--beta = 0: must be in (0, 20)"},
       {{"predict", "--model", input.string(), "--phi", "0.5"}, "not a Wyart-Cates fit"},
       {{"predict", "--phi", "0.5", "--stress", "2"}, "--stress requires --model"},
+      {{"analyze", input.string(), "--model", "wyart-cates", "--wc-phi", "sideways"}, "--wc-phi"},
+      {{"analyze", input.string(), "--wc-phi", "bulk"}, "--wc-phi requires --model"},
   };
   for (const auto& [args, message] : cases) {
     const auto r = dir.run(args);
