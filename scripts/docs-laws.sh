@@ -33,6 +33,13 @@ for study in viscous viscous-mu1 inertial stress-ramp; do
     if [[ -f $out/$study-fit/$f ]]; then cp "$out/$study-fit/$f" "$docs/$study/$f"; fi
   done
 done
+# The viscous studies fitted in the nominal phi too (--wc-phi nominal): how far
+# the fit moves with the fraction it is made in (docs/laws.md "Which phi").
+for study in viscous viscous-mu1; do
+  "$bin" analyze "$out/$study/flowcurves.csv" --model wyart-cates --wc-phi nominal \
+    --out "$out/$study-fit-nominal" -q --no-plots
+  cp "$out/$study-fit-nominal/wyart_cates.json" "$docs/$study/wyart_cates_nominal.json"
+done
 # The stress ramps' first points at phi 0.55-0.57, read as jams (docs/laws.md
 # "A finding"): their time series.
 for point in "$out"/stress-ramp/points/*lambda=0.1; do

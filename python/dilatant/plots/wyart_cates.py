@@ -63,7 +63,7 @@ def overlay(ax, sample, rows, fit, units):
                    and math.isfinite(number(r["viscosity"]))]
             ax.plot([number(r["shear_stress"]) for r in pts],
                     [number(r["viscosity"]) for r in pts], "o", ms=3, color=colour,
-                    label=f"$\\phi$ = {phi:g}" if fitted else None, **style)
+                    label=f"$\\phi$ = {phi:.4g}" if fitted else None, **style)
         if model:
             ax.plot([number(r["shear_stress"]) for r in model],
                     [number(r["viscosity"]) for r in model], "-", color=colour, lw=1)
@@ -84,7 +84,7 @@ def overlay(ax, sample, rows, fit, units):
                 f"$\\chi^2$/dof = {fit['chi2_per_dof']:.3g}")
         if "seeds" in fit:
             spread = fit["seeds"]["spread"]
-            text += (f"\n{len(fit['seeds']['members'])} seeds pooled; their own fits: "
+            text += (f"\n{len(fit['seeds']['members'])} seeds pooled; their own fits:\n"
                      + ", ".join(f"{k} {with_error(v['mean'], v['sem'])}"
                                  for k, v in spread.items()
                                  if k in ("phi_0", "phi_m", "phi_dst") and v["mean"] is not None))
@@ -92,7 +92,10 @@ def overlay(ax, sample, rows, fit, units):
         ax.set_title(f"sample {sample}: data and the fitted model (lines)", fontsize=9)
     else:
         ax.set_title(f"sample {sample}: no fit ({fit.get('fit_note', '')})", fontsize=7)
-    ax.legend(fontsize=6, loc="lower right")
+    # A fit in the points' measured fractions labels each curve with their mean.
+    title = "bulk fraction" if fit.get("phi_basis") == "bulk" else None
+    ax.legend(fontsize=5 if len(phis) > 8 else 6, ncol=2 if len(phis) > 8 else 1,
+              loc="lower right", title=title, title_fontsize=6)
 
 
 def state_map(ax, rows, fit):
