@@ -45,7 +45,9 @@ def test_ramps_are_classified_and_other_cells_left_out(tmp_path, monkeypatch, ca
         "B,0.61,1,100,done,true,true,0.61,0,0.8.0,",        # a jam no cold start confirms
         "C,0.62,1,1,done,true,true,0.62,0,0.8.0,",          # jammed at its first stress
         "D,0.55,1,1,done,false,true,0.55,0.1,0.8.0,",
-        "D,0.55,1,10,done,false,false,0.55,0.2,0.8.0,"])    # cst, valid to lambda 1
+        "D,0.55,1,10,done,false,false,0.55,0.2,0.8.0,",     # cst, valid to lambda 1
+        "F,0.61,0.1,0.1,done,false,true,0.61,0,0.8.0,",
+        "F,0.61,0.1,1,pending,,,,,,"])                      # a ramp still running
     write_sweep(tmp_path / "walls", ["E,0.58,1,1,done,false,true,0.58,0,0.8.0,"],
                 SWEEP.replace("'lees-edwards'", "'walls'"))
     bulk_flow_states.main(["bulk_flow_states", "le", "walls"])
@@ -57,6 +59,7 @@ def test_ramps_are_classified_and_other_cells_left_out(tmp_path, monkeypatch, ca
         "D": ["cst", "10", "1", ""]}
     assert "le/flowcurves.csv B: jammed at lambda 100 without a cold start" in out.err
     assert "walls/flowcurves.csv E: cell.boundary = walls" in out.err
+    assert "le/flowcurves.csv F: the ramp is not finished (1 points pending or failed)" in out.err
 
 
 def test_contradicting_curves_stop_the_script(tmp_path, monkeypatch):

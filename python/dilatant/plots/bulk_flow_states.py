@@ -9,7 +9,10 @@ curve counts when its points ran in the Lees–Edwards box (`cell.boundary`),
 under stress control (a ramp in lambda), with the literal model (Stribeck law,
 no lubrication films, no drag), the model of the sediment table; any other
 curve is named on stderr and left out. A curve is a sweep's `sample` (with
-its nominal phi and seed); its points are those with status `done`, in lambda:
+its nominal phi and seed); its points are those with status `done`, in lambda.
+A curve with a point still `pending` or `failed` is a ramp not yet run to its
+end (a sweep in progress, or one whose chain broke): it is named on stderr and
+left out, since its last point says nothing of the stresses above it.
 
 * no point jammed: `cst`, up to its largest lambda (`max_lambda`);
 * its first (lowest-stress) point jammed: `jammed` (no flow at all);
@@ -115,16 +118,25 @@ def rows_of(flow_file):
     with open(flow_file.parent / "sweep.toml", "rb") as f:
         sweep = tomllib.load(f)
     curves, skipped = defaultdict(list), []
+    unfinished = defaultdict(int)
     for r in csv.DictReader(open(flow_file)):
+        key = (r["sample"], r["phi"], r.get("cell.seed", ""))
+        if r["status"] in ("pending", "failed"):
+            unfinished[key] += 1
         if r["status"] != "done":
             continue
         why = why_not_bulk(r, sweep)
         if why:
             skipped.append(f"{flow_file} {r['sample']}: {why}")
             continue
-        curves[(r["sample"], r["phi"], r.get("cell.seed", ""))].append(r)
+        curves[key].append(r)
     out = []
-    for (sample, _, _), points in curves.items():
+    for key, points in curves.items():
+        sample = key[0]
+        if unfinished[key]:
+            skipped.append(f"{flow_file} {sample}: the ramp is not finished ({unfinished[key]} "
+                           "points pending or failed)")
+            continue
         row, why = curve_row(flow_file.as_posix(), sample, points, sweep)
         if row:
             out.append((float(points[0]["mu0"]), row))
