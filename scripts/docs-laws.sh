@@ -34,11 +34,16 @@ for study in viscous viscous-mu1 inertial stress-ramp; do
   done
 done
 # The viscous studies fitted in the nominal phi too (--wc-phi nominal): how far
-# the fit moves with the fraction it is made in (docs/laws.md "Which phi").
+# the fit moves with the fraction it is made in (docs/laws.md "Which phi"); and
+# weighted by each point's eta_err (--wc-weights errors): why these
+# rate-controlled fits are not (docs/laws.md "How well it fits").
 for study in viscous viscous-mu1; do
   "$bin" analyze "$out/$study/flowcurves.csv" --model wyart-cates --wc-phi nominal \
     --out "$out/$study-fit-nominal" -q --no-plots
   cp "$out/$study-fit-nominal/wyart_cates.json" "$docs/$study/wyart_cates_nominal.json"
+  "$bin" analyze "$out/$study/flowcurves.csv" --model wyart-cates --wc-weights errors \
+    --out "$out/$study-fit-errors" -q --no-plots
+  cp "$out/$study-fit-errors/wyart_cates.json" "$docs/$study/wyart_cates_errors.json"
 done
 # The stress ramps' first points at phi 0.55-0.57, read as jams (docs/laws.md
 # "A finding"): their time series.

@@ -31,6 +31,10 @@ struct FlowPoint {
   // nominal phi, a Lees–Edwards box's realised radii shift it slightly); NaN
   // where only the curve's nominal phi is known (rheometer data).
   double phi_measured = std::numeric_limits<double>::quiet_NaN();
+  // One standard error of the viscosity where the source measured it apart
+  // from the rate's (a rate-controlled sweep point: the rate is imposed, its
+  // error 0, and the viscosity's comes from the stress, eta_err); 0 = not known.
+  double viscosity_err = 0.0;
 };
 
 // A fit window chosen by the user, in stress units of the curve.

@@ -27,9 +27,10 @@ constexpr std::array kRequired = {"phi"sv,       "mu0"sv,   "shear_stress"sv,
 struct Columns {
   std::size_t phi, mu0, stress, rate, valid, jammed;
   std::optional<std::size_t> rate_err;
-  std::optional<std::size_t> status;  // `dilatant sweep`: done | failed | pending
-  std::optional<std::size_t> sample;  // `dilatant sweep`: the curve's label
-  std::optional<std::size_t> eta;     // checked against shear_stress / gamma_dot
+  std::optional<std::size_t> status;   // `dilatant sweep`: done | failed | pending
+  std::optional<std::size_t> sample;   // `dilatant sweep`: the curve's label
+  std::optional<std::size_t> eta;      // checked against shear_stress / gamma_dot
+  std::optional<std::size_t> eta_err;  // FlowPoint::viscosity_err
   // `dilatant sweep`: rate, stress or pressure. A pressure-imposed point has no
   // fixed phi (it is measured): it belongs to mu(J), phi(J), not to a flow
   // curve eta(gamma_dot) at fixed phi, and is left out (docs/sweeps.md
@@ -60,10 +61,10 @@ class SweepReader {
         fail(1, fmt::format("missing column '{}' (a sweep table needs phi, mu0, shear_stress, "
                             "gamma_dot, valid, jammed)",
                             name));
-    return Columns{*find("phi"),   *find("mu0"),    *find("shear_stress"), *find("gamma_dot"),
-                   *find("valid"), *find("jammed"), find("gamma_dot_err"), find("status"),
-                   find("sample"), find("eta"),     find("control"),       find("phi_bulk"),
-                   fields.size()};
+    return Columns{*find("phi"),     *find("mu0"),    *find("shear_stress"), *find("gamma_dot"),
+                   *find("valid"),   *find("jammed"), find("gamma_dot_err"), find("status"),
+                   find("sample"),   find("eta"),     find("eta_err"),       find("control"),
+                   find("phi_bulk"), fields.size()};
   }
 
   double number(std::size_t line, const std::vector<std::string>& f, std::size_t column,
@@ -135,6 +136,11 @@ class SweepReader {
       p.phi_measured = number(line, f, *c.phi_bulk, "phi_bulk");
       if (!(p.phi_measured > 0.0 && p.phi_measured < 0.74))
         fail(line, fmt::format("column 'phi_bulk': {} must be in (0, 0.74)", p.phi_measured));
+    }
+    if (c.eta_err && p.shear_rate > 0.0 && !f[*c.eta_err].empty()) {
+      p.viscosity_err = number(line, f, *c.eta_err, "eta_err");
+      if (p.viscosity_err < 0.0)
+        fail(line, fmt::format("column 'eta_err': {} must be >= 0", p.viscosity_err));
     }
     p.viscosity = p.shear_rate > 0.0 ? p.shear_stress / p.shear_rate
                                      : std::numeric_limits<double>::quiet_NaN();

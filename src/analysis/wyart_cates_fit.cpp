@@ -115,21 +115,30 @@ const FlowPoint* fitted_point_without_bulk(const std::vector<FlowCurve>& curves)
   return nullptr;
 }
 
-// The points that enter the fit, with s_i (see the header).
+// The points that enter the fit, with s_i (see the header). Under
+// Weights::Errors, `unweighed` is the first point without an error (else null).
 std::vector<LogViscosityPoint> points_to_fit(const std::vector<FlowCurve>& curves,
                                              const WyartCatesSettings& settings, bool bulk,
-                                             bool& weighted) {
+                                             bool& weighted, const FlowPoint*& unweighed) {
+  using Weights = WyartCatesSettings::Weights;
   std::vector<LogViscosityPoint> data;
-  weighted = true;
+  weighted = settings.weights != Weights::Uniform;
+  unweighed = nullptr;
   for (const FlowCurve& c : curves) {
     for (const FlowPoint& p : c.points) {
       if (!wyart_cates_fits_point(p)) continue;
-      const double relative = p.shear_rate > 0.0 ? p.shear_rate_err / p.shear_rate : 0.0;
+      // The relative error of eta: the rate's where the stress was imposed;
+      // asked for, else the viscosity's own (an imposed rate has no error).
+      double relative = p.shear_rate > 0.0 ? p.shear_rate_err / p.shear_rate : 0.0;
+      if (settings.weights == Weights::Errors && !(relative > 0.0))
+        relative = p.viscosity_err / p.viscosity;
+      if (!(relative > 0.0) && weighted && !unweighed) unweighed = &p;
       weighted = weighted && relative > 0.0;
       data.push_back({bulk ? p.phi_measured : c.phi, p.shear_stress, std::log(p.viscosity),
                       std::max(relative, settings.noise_floor)});
     }
   }
+  if (settings.weights != Weights::Errors) unweighed = nullptr;
   if (!weighted)
     for (LogViscosityPoint& d : data) d.s = 1.0;
   return data;
@@ -214,6 +223,18 @@ const char* phi_basis_name(WyartCatesSettings::Phi phi) {
   return "auto";
 }
 
+const char* weights_name(WyartCatesSettings::Weights weights) {
+  switch (weights) {
+    case WyartCatesSettings::Weights::Uniform:
+      return "uniform";
+    case WyartCatesSettings::Weights::Errors:
+      return "errors";
+    case WyartCatesSettings::Weights::Auto:
+      break;
+  }
+  return "auto";
+}
+
 double fitted_phi(const FlowCurve& curve, bool bulk) {
   if (!bulk) return curve.phi;
   for (const bool fitted_only : {true, false}) {
@@ -243,7 +264,15 @@ WyartCatesOutcome fit_wyart_cates(const std::vector<FlowCurve>& curves,
   const bool bulk = settings.phi == WyartCatesSettings::Phi::Bulk ||
                     (settings.phi == WyartCatesSettings::Phi::Auto && !without);
   bool weighted = false;
-  std::vector<LogViscosityPoint> data = points_to_fit(curves, settings, bulk, weighted);
+  const FlowPoint* unweighed = nullptr;
+  std::vector<LogViscosityPoint> data = points_to_fit(curves, settings, bulk, weighted, unweighed);
+  if (unweighed) {
+    out.why_not = fmt::format(
+        "the fit weighted by errors needs every fitted point's gamma_dot_err or eta_err; the "
+        "point of line {} has neither",
+        unweighed->line);
+    return out;
+  }
   // Curves at distinct nominal phi: with the measured fraction every point
   // has its own, but the growth with phi is still told by the curves.
   std::vector<double> nominal, phis;

@@ -18,13 +18,15 @@
 // a fit in nominal phi of a wall cell shifts phi_0 and phi_m by the dilation.
 //
 // In logarithms because the viscosity spans decades and its scatter is
-// relative. s_i is the relative error of the shear rate (= that of eta under an
-// imposed stress) when every point has one (a sweep's gamma_dot_err; at least
-// noise_floor), and the covariance is then scaled by chi2/dof when the scatter
-// exceeds the error bars (never down). Rheometer exports carry no errors: s_i =
-// 1, and the covariance is scaled by chi2/dof, i.e. the scatter of ln eta is
-// measured from the residuals. Parameters: phi_0, phi_m, ln sigma*, ln A
-// (positive), alpha, beta; sigma*_err = sigma* se(ln sigma*), likewise A.
+// relative. s_i (WyartCatesSettings::weights) is by default the relative
+// error of the shear rate (= that of eta under an imposed stress) when every
+// point has one (a sweep's gamma_dot_err; at least noise_floor); asked for,
+// the error of eta itself where the rate has none (eta_err under an imposed
+// rate). The covariance is then scaled by chi2/dof when the scatter exceeds
+// the error bars (never down). Rheometer exports carry no errors:
+// s_i = 1, and the covariance is scaled by chi2/dof, i.e. the scatter of ln eta is measured from
+// the residuals. Parameters: phi_0, phi_m, ln sigma*, ln A (positive), alpha, beta; sigma*_err =
+// sigma* se(ln sigma*), likewise A.
 //
 // Start: a grid over (sigma* across the measured stresses, phi_0 above the
 // largest phi, phi_m), with ln A the weighted mean it must be at each node;
@@ -58,7 +60,19 @@ struct WyartCatesSettings {
   // point has one and Nominal otherwise (Auto: rheometer data have none).
   enum class Phi { Auto, Nominal, Bulk };
   Phi phi = Phi::Auto;
+  // The residuals' weights: Auto, the rate errors when every fitted point has
+  // one (a stress-controlled sweep), else uniform; Uniform, every point alike
+  // (the scatter measured from the residuals); Errors, each point's error of
+  // eta, the rate's or else the viscosity's own (eta_err of an imposed rate),
+  // which every fitted point must have. Where the model's misfit exceeds the
+  // points' statistical errors (docs/laws.md: chi2/dof in the hundreds), the
+  // errors weigh the most precise points as if the model were exact there.
+  enum class Weights { Auto, Uniform, Errors };
+  Weights weights = Weights::Auto;
 };
+
+// "auto", "uniform", "errors".
+const char* weights_name(WyartCatesSettings::Weights weights);
 
 // "auto", "nominal", "bulk".
 const char* phi_basis_name(WyartCatesSettings::Phi phi);

@@ -110,7 +110,7 @@ Json wyart_cates_sample_json(const WyartCatesSample& s) {
   put_exponent(j, "beta", f.beta, f);
   j["chi2_per_dof"] = or_null(f.chi2_per_dof());
   j["rms_log10_deviation"] = or_null(f.rms_log10_deviation);
-  j["weights"] = f.weighted ? "rate errors (gamma_dot_err)"
+  j["weights"] = f.weighted ? "the errors of eta (gamma_dot_err, or eta_err at an imposed rate)"
                             : "uniform in ln eta; the scatter is measured from the residuals";
   j["fitted_points"] = f.points;
   j["fitted_curves"] = f.curves;
@@ -248,7 +248,8 @@ std::string wyart_cates_json(const WyartCatesReport& r) {
                    {"beta", r.settings.beta},
                    {"fit_beta", r.settings.fit_beta},
                    {"noise_floor", r.settings.noise_floor},
-                   {"phi", phi_basis_name(r.settings.phi)}};
+                   {"phi", phi_basis_name(r.settings.phi)},
+                   {"weights", weights_name(r.settings.weights)}};
   Json samples = Json::object();
   for (const auto& s : r.samples) samples[s.sample] = wyart_cates_sample_json(s);
   j["samples"] = samples;

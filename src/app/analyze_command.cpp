@@ -84,6 +84,18 @@ CLI::App* add_analyze_command(CLI::App& app, AnalyzeCommandArgs& args) {
           CLI::ignore_case))
       ->default_str("auto")
       ->needs(model);
+  cmd->add_option("--wc-weights", wc.weights,
+                  "Wyart-Cates: the residuals' weights: auto (the rate errors when every point "
+                  "has one), uniform, or errors (each point's error of eta: gamma_dot_err, or "
+                  "eta_err at an imposed rate)")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, analysis::WyartCatesSettings::Weights>{
+              {"auto", analysis::WyartCatesSettings::Weights::Auto},
+              {"uniform", analysis::WyartCatesSettings::Weights::Uniform},
+              {"errors", analysis::WyartCatesSettings::Weights::Errors}},
+          CLI::ignore_case))
+      ->default_str("auto")
+      ->needs(model);
   cmd->add_flag("--fit-alpha", wc.fit_alpha, "Wyart-Cates: fit alpha too")->needs(model);
   cmd->add_flag("--fit-beta", wc.fit_beta, "Wyart-Cates: fit beta too")->needs(model);
   return cmd;

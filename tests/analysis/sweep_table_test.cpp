@@ -105,14 +105,15 @@ struct BadSweep {
 };
 
 // A sweep's phi_bulk (the fraction the point measured) is each point's
-// phi_measured; a table without it, or an empty field, leaves NaN.
+// phi_measured, its eta_err the viscosity_err; a table without them, or an
+// empty field, leaves NaN and 0.
 TEST(SweepTable, ReadsEachPointsMeasuredBulkFraction) {
   test::TempDir dir;
   const auto file = dir.write("flowcurves.csv",
-                              "phi,mu0,shear_stress,gamma_dot,valid,jammed,phi_bulk\n"
-                              "0.62,0.1,1,0.02,true,false,0.6097\n"
-                              "0.62,0.1,10,0.1,true,false,\n"
-                              "0.62,0.1,100,0,true,true,0.6121\n");
+                              "phi,mu0,shear_stress,gamma_dot,valid,jammed,phi_bulk,eta_err\n"
+                              "0.62,0.1,1,0.02,true,false,0.6097,2.5\n"
+                              "0.62,0.1,10,0.1,true,false,,\n"
+                              "0.62,0.1,100,0,true,true,0.6121,\n");
   const AnalysisInput in = read_sweep_table(file);
   ASSERT_EQ(in.curves.size(), 1u);
   const auto& p = in.curves[0].points;
@@ -121,6 +122,8 @@ TEST(SweepTable, ReadsEachPointsMeasuredBulkFraction) {
   EXPECT_DOUBLE_EQ(p[0].phi_measured, 0.6097);
   EXPECT_TRUE(std::isnan(p[1].phi_measured));
   EXPECT_DOUBLE_EQ(p[2].phi_measured, 0.6121);  // a jam has its packing's fraction
+  EXPECT_DOUBLE_EQ(p[0].viscosity_err, 2.5);    // eta_err, where given
+  EXPECT_EQ(p[1].viscosity_err, 0.0);
   EXPECT_TRUE(std::isnan(load_analysis_input(kSweep).curves[0].points[0].phi_measured));
 }
 
@@ -152,6 +155,9 @@ std::vector<BadSweep> bad_sweeps() {
       {"PhiBulkNotANumber",
        "phi,mu0,shear_stress,gamma_dot,valid,jammed,phi_bulk\n0.5,0.1,1,1,true,false,x\n", 2,
        "column 'phi_bulk': 'x' is not a number"},
+      {"NegativeEtaErr",
+       "phi,mu0,shear_stress,gamma_dot,valid,jammed,eta_err\n0.5,0.1,1,1,true,false,-2\n", 2,
+       "column 'eta_err': -2 must be >= 0"},
       {"NaN", h + "0.5,0.1,nan,1,0,1,true,false\n", 1, "missing value: line 2"},
       {"Infinite", h + "0.5,0.1,inf,1,0,1,true,false\n", 2, "not a finite number"},
       // eta 2.50 where shear_stress / gamma_dot = 2.00: 25%, its digits allow 1.6%.

@@ -136,6 +136,39 @@ TEST(WyartCatesFit, RateErrorsWeighTheFit) {
   expect_within(out.fit->phi_m, kTruth.phi_m, 4, "phi_m");
 }
 
+// Under an imposed rate the rate has no error (a rate-controlled sweep's
+// gamma_dot_err is 0); weights "errors" weigh the point by the viscosity's
+// own error (eta_err):
+// with errors equal to the noise chi2/dof is 1, and a point thrown off by a
+// factor 40 but carrying its large error (as the near-jammed points of a
+// rate-controlled sweep do, docs/laws.md) leaves the fit within its errors.
+TEST(WyartCatesFit, ViscosityErrorsWeighAFitAtImposedRate) {
+  std::vector<FlowCurve> c = curves(kTruth, kPhis, kNoise, 5);
+  for (auto& curve : c)
+    for (auto& p : curve.points) p.viscosity_err = kNoise * p.viscosity;
+  FlowPoint& wild = c[2].points[10];
+  ASSERT_FALSE(wild.jammed);
+  wild.viscosity *= 40.0;
+  wild.shear_rate = wild.shear_stress / wild.viscosity;
+  wild.viscosity_err = 40.0 * wild.viscosity;  // ln-error ~ 3.7, the factor 40
+  WyartCatesSettings errors;
+  errors.weights = WyartCatesSettings::Weights::Errors;
+  const auto out = fit_wyart_cates(c, errors);
+  ASSERT_TRUE(out.fit) << out.why_not;
+  EXPECT_TRUE(out.fit->weighted);
+  EXPECT_NEAR(out.fit->chi2_per_dof(), 1.0, 0.25);
+  expect_within(out.fit->phi_m, kTruth.phi_m, 4, "phi_m");
+  expect_within(out.fit->phi_0, kTruth.phi_0, 4, "phi_0");
+  // By default (auto) such points are fitted alike: the rate has no error.
+  EXPECT_FALSE(fit_wyart_cates(c, {}).fit->weighted);
+  // Errors asked for where a point has none: refused, naming its line.
+  c[1].points[2].viscosity_err = 0.0;
+  c[1].points[2].line = 77;
+  const auto refused = fit_wyart_cates(c, errors);
+  EXPECT_FALSE(refused.fit);
+  EXPECT_NE(refused.why_not.find("line 77"), std::string::npos) << refused.why_not;
+}
+
 TEST(WyartCatesFit, OneVolumeFractionIsNotEnough) {
   const auto out = fit_wyart_cates(curves(kTruth, {0.53}, kNoise, 1), {});
   EXPECT_FALSE(out.fit);

@@ -205,6 +205,8 @@ TEST(WyartCatesCommand, BadOptionsExitTwoWithOneLine) {
       {{"predict", "--phi", "0.5", "--stress", "2"}, "--stress requires --model"},
       {{"analyze", input.string(), "--model", "wyart-cates", "--wc-phi", "sideways"}, "--wc-phi"},
       {{"analyze", input.string(), "--wc-phi", "bulk"}, "--wc-phi requires --model"},
+      {{"analyze", input.string(), "--model", "wyart-cates", "--wc-weights", "heavy"},
+       "--wc-weights"},
   };
   for (const auto& [args, message] : cases) {
     const auto r = dir.run(args);
