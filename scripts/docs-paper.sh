@@ -43,9 +43,13 @@ for sweep in ${DILATANT_PAPER_SWEEPS:-$sweeps}; do
     point=$(basename "$(dirname "$(dirname "$cold")")")
     cp "$cold" "$docs/$sweep/cold-starts/$point.json"
   done
-  # Fig. 1b-d come from fig2's mu0 0.1 curve; the other sweeps need their flow curves only.
+  # Fig. 1b-d come from fig2's mu0 0.1 curve, and from the decisive study's
+  # (the paper's cell at its Newtonian branch); the other sweeps need their
+  # flow curves only.
   plots=(flow_curves)
-  if [[ $sweep == fig2 ]]; then plots+=(fig1b_viscosity fig1c_sommerfeld fig1d_contacts); fi
+  if [[ $sweep == fig2 || $sweep == decisive-* ]]; then
+    plots+=(fig1b_viscosity fig1c_sommerfeld fig1d_contacts)
+  fi
   for plot in "${plots[@]}"; do
     if [[ -f $out/$sweep/plots/$plot.png ]]; then cp "$out/$sweep/plots/$plot".{png,svg} "$docs/$sweep/"; fi
   done
