@@ -32,4 +32,5 @@ mkdir -p "$out"
 # study's ramps would (examples/paper/decisive-walls.toml: nominal 0.62).
 "$tools/dilatant-starting-bulk" bench/configs/coulomb.toml --set cell.phi=0.61 \
   --scan 0.600,0.620,0.002 --targets 0.595,0.598,0.600,0.603 --out "$out"
-build/dilatant --version >"$out/version.txt"
+# The version of the tree the tool was built from (its dilatant beside it).
+"$tools/../dilatant" --version >"$out/version.txt"

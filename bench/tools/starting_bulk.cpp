@@ -19,6 +19,8 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <limits>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -43,7 +45,12 @@ std::string scan_csv(Config config, const std::vector<double>& scan) {
   for (int k = 0; k <= n; ++k) {
     config.cell()->phi = low + k * step;
     const auto start = Clock::now();
-    const double bulk = starting_bulk_fraction(config);
+    double bulk = std::numeric_limits<double>::quiet_NaN();  // a phi that does not pack
+    try {
+      bulk = starting_bulk_fraction(config);
+    } catch (const std::runtime_error& e) {
+      std::cerr << fmt::format("phi {:.4f}: no packing ({})\n", config.cell()->phi, e.what());
+    }
     csv += fmt::format("{:.4f},{:.5f},{:.1f}\n", config.cell()->phi, bulk, seconds_since(start));
     std::cerr << fmt::format("phi {:.4f}: starts at {:.5f}\n", config.cell()->phi, bulk);
   }
@@ -89,6 +96,8 @@ int main(int argc, char** argv) {
     if (!config.cell()) throw InputError(config_file + ": not a shear-cell configuration");
     if (!scan.empty() && !(scan[2] > 0.0 && scan[1] >= scan[0]))
       throw InputError("--scan: needs LOW <= HIGH and STEP > 0");
+    if (!(tolerance > 0.0)) throw InputError("--tolerance: must be > 0");
+    if (max_packings < 1) throw InputError("--max-packings: must be >= 1");
     std::filesystem::create_directories(out);
     if (!scan.empty())
       write_file_atomically(std::filesystem::path(out) / "scan.csv", scan_csv(config, scan));

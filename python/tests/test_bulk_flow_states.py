@@ -47,7 +47,9 @@ def test_ramps_are_classified_and_other_cells_left_out(tmp_path, monkeypatch, ca
         "D,0.55,1,1,done,false,true,0.55,0.1,0.8.0,",
         "D,0.55,1,10,done,false,false,0.55,0.2,0.8.0,",     # cst, valid to lambda 1
         "F,0.61,0.1,0.1,done,false,true,0.61,0,0.8.0,",
-        "F,0.61,0.1,1,pending,,,,,,"])                      # a ramp still running
+        "F,0.61,0.1,1,pending,,,,,,",                       # a ramp still running
+        "G,0.62,0.1,0.1,done,false,true,0.62,0,0.8.0,",
+        "G,0.62,0.1,1,failed,,,,,,"])                       # a ramp whose chain broke
     write_sweep(tmp_path / "walls", ["E,0.58,1,1,done,false,true,0.58,0,0.8.0,"],
                 SWEEP.replace("'lees-edwards'", "'walls'"))
     bulk_flow_states.main(["bulk_flow_states", "le", "walls"])
@@ -60,6 +62,7 @@ def test_ramps_are_classified_and_other_cells_left_out(tmp_path, monkeypatch, ca
     assert "le/flowcurves.csv B: jammed at lambda 100 without a cold start" in out.err
     assert "walls/flowcurves.csv E: cell.boundary = walls" in out.err
     assert "le/flowcurves.csv F: the ramp is not finished (1 points pending or failed)" in out.err
+    assert "le/flowcurves.csv G: the ramp is not finished" in out.err
 
 
 def test_contradicting_curves_stop_the_script(tmp_path, monkeypatch):

@@ -107,23 +107,31 @@ class WyartCatesProblem {
   int beta_slot_ = -1;
 };
 
-// The first fitted point without a measured fraction, or null.
-const FlowPoint* fitted_point_without_bulk(const std::vector<FlowCurve>& curves) {
+// A fitted point, for a refusal's message: where it is in its source.
+struct PointPlace {
+  const FlowCurve* curve = nullptr;
+  const FlowPoint* point = nullptr;
+  explicit operator bool() const { return point != nullptr; }
+  std::string where() const { return fmt::format("line {} of {}", point->line, curve->source); }
+};
+
+// The first fitted point without a measured fraction, if any.
+PointPlace fitted_point_without_bulk(const std::vector<FlowCurve>& curves) {
   for (const FlowCurve& c : curves)
     for (const FlowPoint& p : c.points)
-      if (wyart_cates_fits_point(p) && !std::isfinite(p.phi_measured)) return &p;
-  return nullptr;
+      if (wyart_cates_fits_point(p) && !std::isfinite(p.phi_measured)) return {&c, &p};
+  return {};
 }
 
 // The points that enter the fit, with s_i (see the header). Under
-// Weights::Errors, `unweighed` is the first point without an error (else null).
+// Weights::Errors, `unweighed` is the first point without an error (else empty).
 std::vector<LogViscosityPoint> points_to_fit(const std::vector<FlowCurve>& curves,
                                              const WyartCatesSettings& settings, bool bulk,
-                                             bool& weighted, const FlowPoint*& unweighed) {
+                                             bool& weighted, PointPlace& unweighed) {
   using Weights = WyartCatesSettings::Weights;
   std::vector<LogViscosityPoint> data;
   weighted = settings.weights != Weights::Uniform;
-  unweighed = nullptr;
+  unweighed = {};
   for (const FlowCurve& c : curves) {
     for (const FlowPoint& p : c.points) {
       if (!wyart_cates_fits_point(p)) continue;
@@ -132,13 +140,13 @@ std::vector<LogViscosityPoint> points_to_fit(const std::vector<FlowCurve>& curve
       double relative = p.shear_rate > 0.0 ? p.shear_rate_err / p.shear_rate : 0.0;
       if (settings.weights == Weights::Errors && !(relative > 0.0))
         relative = p.viscosity_err / p.viscosity;
-      if (!(relative > 0.0) && weighted && !unweighed) unweighed = &p;
+      if (!(relative > 0.0) && weighted && !unweighed) unweighed = {&c, &p};
       weighted = weighted && relative > 0.0;
       data.push_back({bulk ? p.phi_measured : c.phi, p.shear_stress, std::log(p.viscosity),
                       std::max(relative, settings.noise_floor)});
     }
   }
-  if (settings.weights != Weights::Errors) unweighed = nullptr;
+  if (settings.weights != Weights::Errors) unweighed = {};
   if (!weighted)
     for (LogViscosityPoint& d : data) d.s = 1.0;
   return data;
@@ -253,24 +261,24 @@ double fitted_phi(const FlowCurve& curve, bool bulk) {
 WyartCatesOutcome fit_wyart_cates(const std::vector<FlowCurve>& curves,
                                   const WyartCatesSettings& settings) {
   WyartCatesOutcome out;
-  const FlowPoint* without = fitted_point_without_bulk(curves);
+  const PointPlace without = fitted_point_without_bulk(curves);
   if (settings.phi == WyartCatesSettings::Phi::Bulk && without) {
     out.why_not = fmt::format(
-        "the fit in the bulk fraction needs every fitted point's phi_bulk; the point of line {} "
-        "has none",
-        without->line);
+        "the fit in the bulk fraction needs every fitted point's phi_bulk; the point of {} has "
+        "none (a rheometer file has none: fit it in its nominal phi)",
+        without.where());
     return out;
   }
   const bool bulk = settings.phi == WyartCatesSettings::Phi::Bulk ||
                     (settings.phi == WyartCatesSettings::Phi::Auto && !without);
   bool weighted = false;
-  const FlowPoint* unweighed = nullptr;
+  PointPlace unweighed;
   std::vector<LogViscosityPoint> data = points_to_fit(curves, settings, bulk, weighted, unweighed);
   if (unweighed) {
     out.why_not = fmt::format(
         "the fit weighted by errors needs every fitted point's gamma_dot_err or eta_err; the "
-        "point of line {} has neither",
-        unweighed->line);
+        "point of {} has neither",
+        unweighed.where());
     return out;
   }
   // Curves at distinct nominal phi: with the measured fraction every point

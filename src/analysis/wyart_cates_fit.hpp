@@ -33,10 +33,12 @@
 // the best node starts the descent. A step that puts a measured point at or
 // beyond phi_J (an infinite model viscosity) is refused.
 //
-// Not fitted (why_not): fewer than 2 phi (phi_0 and A are told apart only by
-// how the viscosity grows with phi), no more points than parameters, or a
+// Not fitted (why_not): fewer than 2 nominal phi (phi_0 and A are told apart
+// only by how the viscosity grows with phi), no more points than parameters, a
 // fitted sigma* outside the measured stresses (the curves do not cross the
-// onset of frictional contacts, so sigma* and phi_m are not determined).
+// onset of frictional contacts, so sigma* and phi_m are not determined), a
+// point without phi_bulk under Phi::Bulk, or without an error under
+// Weights::Errors (each named by its line and file).
 #include <Eigen/Dense>
 #include <optional>
 #include <string>
@@ -65,7 +67,7 @@ struct WyartCatesSettings {
   // (the scatter measured from the residuals); Errors, each point's error of
   // eta, the rate's or else the viscosity's own (eta_err of an imposed rate),
   // which every fitted point must have. Where the model's misfit exceeds the
-  // points' statistical errors (docs/laws.md: chi2/dof in the hundreds), the
+  // points' statistical errors (docs/laws.md: chi2/dof 346-17306), the
   // errors weigh the most precise points as if the model were exact there.
   enum class Weights { Auto, Uniform, Errors };
   Weights weights = Weights::Auto;
@@ -87,7 +89,7 @@ struct WyartCatesFit {
   std::vector<double> phi;  // the curves' fitted_phi, distinct, ascending
   double stress_low = 0.0;  // the fitted points' stress range
   double stress_high = 0.0;
-  bool weighted = false;             // s_i from the rate errors; else 1
+  bool weighted = false;             // s_i from the points' errors; else 1
   double rms_log10_deviation = 0.0;  // of eta from the model, in decades
   // The covariance of the fitted parameters, in the order of `names` (of
   // phi_0, phi_m, ln_sigma_star, ln_A, alpha, beta: those fitted), as scaled

@@ -204,6 +204,16 @@ WyartCatesReport wyart_cates_report(const AnalysisInput& input,
   r.kind = input.kind;
   r.units = input.units;
   r.settings = settings;
+  // "auto" decided once for the whole input, so that seeds and their pool are
+  // fitted in the same fraction: bulk only if every fitted point has one.
+  WyartCatesSettings resolved = settings;
+  if (settings.phi == WyartCatesSettings::Phi::Auto) {
+    bool all = true;
+    for (const FlowCurve& c : input.curves)
+      for (const FlowPoint& p : c.points)
+        all = all && (!wyart_cates_fits_point(p) || std::isfinite(p.phi_measured));
+    resolved.phi = all ? WyartCatesSettings::Phi::Bulk : WyartCatesSettings::Phi::Nominal;
+  }
   r.curves = input.curves;
   std::stable_sort(r.curves.begin(), r.curves.end(),
                    [](const FlowCurve& a, const FlowCurve& b) { return a.phi < b.phi; });
@@ -211,7 +221,7 @@ WyartCatesReport wyart_cates_report(const AnalysisInput& input,
     std::vector<FlowCurve> mine;
     for (const FlowCurve& c : input.curves)
       if (c.sample == name) mine.push_back(c);
-    r.samples.push_back(fitted_sample(name, mine, settings));
+    r.samples.push_back(fitted_sample(name, mine, resolved));
   }
   for (const SeedGroup& g : seed_groups(input.samples)) {
     std::vector<FlowCurve> mine;
@@ -221,7 +231,7 @@ WyartCatesReport wyart_cates_report(const AnalysisInput& input,
     const bool taken =
         std::find(input.samples.begin(), input.samples.end(), g.label) != input.samples.end();
     WyartCatesSample pooled =
-        fitted_sample(taken ? g.label + " (seeds pooled)" : g.label, mine, settings);
+        fitted_sample(taken ? g.label + " (seeds pooled)" : g.label, mine, resolved);
     pooled.members = g.members;
     std::vector<const WyartCatesSample*> seeds;
     for (const auto& s : r.samples)

@@ -151,7 +151,9 @@ SedimentOutcome run_sediment(const Config& config, const RunOptions& options) {
     std::vector<double> at;
     for (const Sample& s : samples) at.push_back(s.phi_at[k]);
     const MeanError e = mean_error(at);
-    by_exclusion[fmt::format("{:g}", kExclusions[k])] = {{"phi", e.mean}, {"err", e.error}};
+    by_exclusion[fmt::format("{:g}", kExclusions[k])] = {
+        {"phi", e.mean},
+        {"err", samples.size() > 1 ? nlohmann::json(e.error) : nlohmann::json(nullptr)}};
   }
   j["phi_by_exclusion"] = by_exclusion;
   j["phi_initial"] = c.phi;
