@@ -204,6 +204,14 @@ Eigen::VectorXd grid_start(const WyartCatesProblem& problem, const WyartCatesSet
   return best;
 }
 
+// A choice's name in its table (the first, the default, for a value not in it).
+template <class Choice, std::size_t N>
+const char* name_of(const std::array<ChoiceName<Choice>, N>& names, Choice value) {
+  for (const ChoiceName<Choice>& c : names)
+    if (c.value == value) return c.name;
+  return names.front().name;
+}
+
 }  // namespace
 
 bool wyart_cates_fits_point(const FlowPoint& p) {
@@ -219,28 +227,10 @@ WyartCatesParameters WyartCatesFit::model() const {
   return {phi_0.value, phi_m.value, sigma_star.value, A.value, alpha.value, beta.value};
 }
 
-const char* phi_basis_name(WyartCatesSettings::Phi phi) {
-  switch (phi) {
-    case WyartCatesSettings::Phi::Nominal:
-      return "nominal";
-    case WyartCatesSettings::Phi::Bulk:
-      return "bulk";
-    case WyartCatesSettings::Phi::Auto:
-      break;
-  }
-  return "auto";
-}
+const char* phi_basis_name(WyartCatesSettings::Phi phi) { return name_of(kPhiBasisNames, phi); }
 
 const char* weights_name(WyartCatesSettings::Weights weights) {
-  switch (weights) {
-    case WyartCatesSettings::Weights::Uniform:
-      return "uniform";
-    case WyartCatesSettings::Weights::Errors:
-      return "errors";
-    case WyartCatesSettings::Weights::Auto:
-      break;
-  }
-  return "auto";
+  return name_of(kWeightsNames, weights);
 }
 
 double fitted_phi(const FlowCurve& curve, bool bulk) {

@@ -40,6 +40,7 @@
 // point without phi_bulk under Phi::Bulk, or without an error under
 // Weights::Errors (each named by its line and file).
 #include <Eigen/Dense>
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -73,10 +74,27 @@ struct WyartCatesSettings {
   Weights weights = Weights::Auto;
 };
 
-// "auto", "uniform", "errors".
-const char* weights_name(WyartCatesSettings::Weights weights);
+// The names of the settings' choices, one table per choice: what the CLI's
+// --wc-phi and --wc-weights and Python's phi= and weights= accept (case aside),
+// and what wyart_cates.json's `settings` says.
+template <class Choice>
+struct ChoiceName {
+  const char* name;
+  Choice value;
+};
+inline constexpr std::array<ChoiceName<WyartCatesSettings::Phi>, 3> kPhiBasisNames{{
+    {"auto", WyartCatesSettings::Phi::Auto},
+    {"nominal", WyartCatesSettings::Phi::Nominal},
+    {"bulk", WyartCatesSettings::Phi::Bulk},
+}};
+inline constexpr std::array<ChoiceName<WyartCatesSettings::Weights>, 3> kWeightsNames{{
+    {"auto", WyartCatesSettings::Weights::Auto},
+    {"uniform", WyartCatesSettings::Weights::Uniform},
+    {"errors", WyartCatesSettings::Weights::Errors},
+}};
 
-// "auto", "nominal", "bulk".
+// A choice's name in the tables above.
+const char* weights_name(WyartCatesSettings::Weights weights);
 const char* phi_basis_name(WyartCatesSettings::Phi phi);
 
 struct WyartCatesFit {

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -19,6 +20,18 @@
 #include "io/output_folder.hpp"
 
 namespace dilatant {
+
+namespace {
+
+// A choice's names (analysis::ChoiceName) as CLI::CheckedTransformer reads them.
+template <class Choice, std::size_t N>
+std::map<std::string, Choice> choice_map(const std::array<analysis::ChoiceName<Choice>, N>& names) {
+  std::map<std::string, Choice> map;
+  for (const analysis::ChoiceName<Choice>& c : names) map.emplace(c.name, c.value);
+  return map;
+}
+
+}  // namespace
 
 CLI::App* add_analyze_command(CLI::App& app, AnalyzeCommandArgs& args) {
   CLI::App* cmd = app.add_subcommand(
@@ -76,25 +89,15 @@ CLI::App* add_analyze_command(CLI::App& app, AnalyzeCommandArgs& args) {
                   "Wyart-Cates: the volume fraction fitted: bulk (each point's measured "
                   "phi_bulk, of a sweep table), nominal (the curve's phi), or auto (bulk when "
                   "every fitted point has one)")
-      ->transform(CLI::CheckedTransformer(
-          std::map<std::string, analysis::WyartCatesSettings::Phi>{
-              {"auto", analysis::WyartCatesSettings::Phi::Auto},
-              {"nominal", analysis::WyartCatesSettings::Phi::Nominal},
-              {"bulk", analysis::WyartCatesSettings::Phi::Bulk}},
-          CLI::ignore_case))
-      ->default_str("auto")
+      ->transform(CLI::CheckedTransformer(choice_map(analysis::kPhiBasisNames), CLI::ignore_case))
+      ->default_str(analysis::phi_basis_name(wc.phi))
       ->needs(model);
   cmd->add_option("--wc-weights", wc.weights,
                   "Wyart-Cates: the residuals' weights: auto (the rate errors when every point "
                   "has one), uniform, or errors (each point's error of eta: gamma_dot_err, or "
                   "eta_err at an imposed rate)")
-      ->transform(CLI::CheckedTransformer(
-          std::map<std::string, analysis::WyartCatesSettings::Weights>{
-              {"auto", analysis::WyartCatesSettings::Weights::Auto},
-              {"uniform", analysis::WyartCatesSettings::Weights::Uniform},
-              {"errors", analysis::WyartCatesSettings::Weights::Errors}},
-          CLI::ignore_case))
-      ->default_str("auto")
+      ->transform(CLI::CheckedTransformer(choice_map(analysis::kWeightsNames), CLI::ignore_case))
+      ->default_str(analysis::weights_name(wc.weights))
       ->needs(model);
   cmd->add_flag("--fit-alpha", wc.fit_alpha, "Wyart-Cates: fit alpha too")->needs(model);
   cmd->add_flag("--fit-beta", wc.fit_beta, "Wyart-Cates: fit beta too")->needs(model);
