@@ -91,14 +91,25 @@ class WyartCatesResult:
 
 
 def fit_wyart_cates(input, out=None, *, alpha=None, beta=None, fit_alpha=False, fit_beta=False,
-                    plots=True):
+                    phi="auto", weights="auto", plots=True):
     """Fits the Wyart–Cates model (phi_0, phi_m, sigma*, A; alpha and beta held
     at 2 and 1 unless fit_alpha/fit_beta, or held at the values given) to each
     sample of a manifest (.toml) or a sweep's flowcurves.csv, as `dilatant
     analyze --model wyart-cates`; returns a WyartCatesResult. out=None: nothing
     is kept (and no plot). No sample fitted raises ConfigError with each
-    sample's reason."""
-    settings = dict(alpha=alpha, beta=beta, fit_alpha=bool(fit_alpha), fit_beta=bool(fit_beta))
+    sample's reason.
+
+    phi, the volume fraction fitted (`--wc-phi`): 'bulk', each point's
+    measured phi_bulk (a sweep table's; a point without one refuses the fit),
+    'nominal', each curve's phi, or 'auto', bulk when every fitted point of
+    the input has one, else nominal. weights, the residuals' (`--wc-weights`):
+    'auto', the rate errors when every point has one, else uniform;
+    'uniform'; or 'errors', each point's error of eta (gamma_dot_err, or
+    eta_err at an imposed rate; a point without one refuses the fit). Another
+    value raises ConfigError naming the argument and the allowed ones. The
+    JSON says which basis each sample was fitted in (`phi_basis`)."""
+    settings = dict(alpha=alpha, beta=beta, fit_alpha=bool(fit_alpha), fit_beta=bool(fit_beta),
+                    phi=str(phi), weights=str(weights))
     return _write_and_read(_core.fit_wyart_cates, WyartCatesResult, "wyart_cates", input, out,
                            plots, settings, "plot skipped")
 
@@ -119,8 +130,10 @@ def predict(mu0=None, phi=None, s_c=None, table=None, *, model=None, stress=None
     'shear_jamming', 'no_flow'), and with stress the state of the
     stress-controlled flow there: the dict of `dilatant predict --model FILE
     --json`; sample chooses among several fitted samples (default: the only
-    one, or the pooled fit of one suspension's seeds). `source` in the dict
-    says which answered."""
+    one, or the pooled fit of one suspension's seeds). phi is then read in
+    the fit's basis, the JSON's `phi_basis`: the bulk fraction (a sweep's
+    phi_bulk, below a wall cell's nominal phi) when the fit was in bulk phi,
+    else the nominal one. `source` in the dict says which answered."""
     if phi is None:
         raise TypeError("predict() needs phi")
     if model is not None:

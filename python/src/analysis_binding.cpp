@@ -7,7 +7,11 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <array>
+#include <cctype>
 #include <optional>
+#include <string>
+#include <string_view>
 
 #include "analysis/analysis.hpp"
 #include "analysis/report_files.hpp"
@@ -25,6 +29,24 @@ namespace {
 
 void check(bool ok, std::string_view name, double value, std::string_view what) {
   if (!ok) throw InputError(fmt::format("{} = {}: {}", name, value, what));
+}
+
+// The value of a choice among its names (analysis::ChoiceName), case aside as
+// the CLI reads --wc-phi and --wc-weights; another is bad input naming them.
+template <class Choice, std::size_t N>
+Choice choice(std::string_view name, const std::string& value,
+              const std::array<analysis::ChoiceName<Choice>, N>& names) {
+  const auto lower = [](std::string_view text) {
+    std::string out(text);
+    for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+  };
+  std::string allowed;
+  for (const analysis::ChoiceName<Choice>& c : names) {
+    if (lower(value) == lower(c.name)) return c.value;
+    allowed += fmt::format("{}{}", allowed.empty() ? "" : ", ", c.name);
+  }
+  throw InputError(fmt::format("{} = '{}': must be one of {}", name, value, allowed));
 }
 
 // Writes curves.csv, points.csv and fits.json into `out`; returns the numbers
@@ -81,16 +103,19 @@ py::list rheometer_steps(const std::filesystem::path& file) {
 
 // The Wyart–Cates fit of every sample (analysis/wyart_cates_report.hpp):
 // writes wyart_cates.json, wyart_cates_curves.csv and wyart_cates_map.csv into
-// `out`; returns the numbers of samples and of fitted ones. No sample fitted
-// is a ConfigError naming each one's reason, as the CLI's exit 2.
+// `out`; phi and weights are named as --wc-phi's and --wc-weights' values.
+// Returns the numbers of samples and of fitted ones. No sample fitted is a
+// ConfigError naming each one's reason, as the CLI's exit 2.
 py::dict fit_wyart_cates(const std::filesystem::path& input, const std::filesystem::path& out,
                          std::optional<double> alpha, std::optional<double> beta, bool fit_alpha,
-                         bool fit_beta) {
+                         bool fit_beta, const std::string& phi, const std::string& weights) {
   analysis::WyartCatesSettings s;
   s.alpha = alpha.value_or(s.alpha);
   s.beta = beta.value_or(s.beta);
   s.fit_alpha = fit_alpha;
   s.fit_beta = fit_beta;
+  s.phi = choice("phi", phi, analysis::kPhiBasisNames);
+  s.weights = choice("weights", weights, analysis::kWeightsNames);
   check(s.alpha > 0.0 && s.alpha < 20.0, "alpha", s.alpha, "must be in (0, 20)");
   check(s.beta > 0.0 && s.beta < 20.0, "beta", s.beta, "must be in (0, 20)");
   std::size_t samples = 0, fitted = 0;
@@ -124,7 +149,8 @@ void bind_analysis(py::module_& m) {
         py::arg("dst_n_cap"), py::arg("min_window_points"), py::arg("confidence"));
   m.def("rheometer_steps", &rheometer_steps, py::arg("file"));
   m.def("fit_wyart_cates", &fit_wyart_cates, py::arg("input"), py::arg("out"), py::arg("alpha"),
-        py::arg("beta"), py::arg("fit_alpha"), py::arg("fit_beta"));
+        py::arg("beta"), py::arg("fit_alpha"), py::arg("fit_beta"), py::arg("phi"),
+        py::arg("weights"));
 }
 
 }  // namespace dilatant::python
