@@ -233,6 +233,10 @@ const char* weights_name(WyartCatesSettings::Weights weights) {
   return name_of(kWeightsNames, weights);
 }
 
+bool every_fitted_point_has_bulk(const std::vector<FlowCurve>& curves) {
+  return !fitted_point_without_bulk(curves);
+}
+
 double fitted_phi(const FlowCurve& curve, bool bulk) {
   if (!bulk) return curve.phi;
   for (const bool fitted_only : {true, false}) {

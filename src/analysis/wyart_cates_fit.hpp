@@ -132,6 +132,10 @@ bool wyart_cates_fits_point(const FlowPoint& p);
 // fitted, its nominal phi when none has one. For tables and the overlay.
 double fitted_phi(const FlowCurve& curve, bool bulk);
 
+// Whether every fitted point (wyart_cates_fits_point) has a measured fraction:
+// what WyartCatesSettings::Phi::Auto decides by.
+bool every_fitted_point_has_bulk(const std::vector<FlowCurve>& curves);
+
 // The curves of one sample (their `sample` names are not read).
 WyartCatesOutcome fit_wyart_cates(const std::vector<FlowCurve>& curves,
                                   const WyartCatesSettings& settings);

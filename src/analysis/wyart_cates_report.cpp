@@ -207,13 +207,9 @@ WyartCatesReport wyart_cates_report(const AnalysisInput& input,
   // "auto" decided once for the whole input, so that seeds and their pool are
   // fitted in the same fraction: bulk only if every fitted point has one.
   WyartCatesSettings resolved = settings;
-  if (settings.phi == WyartCatesSettings::Phi::Auto) {
-    bool all = true;
-    for (const FlowCurve& c : input.curves)
-      for (const FlowPoint& p : c.points)
-        all = all && (!wyart_cates_fits_point(p) || std::isfinite(p.phi_measured));
-    resolved.phi = all ? WyartCatesSettings::Phi::Bulk : WyartCatesSettings::Phi::Nominal;
-  }
+  if (settings.phi == WyartCatesSettings::Phi::Auto)
+    resolved.phi = every_fitted_point_has_bulk(input.curves) ? WyartCatesSettings::Phi::Bulk
+                                                             : WyartCatesSettings::Phi::Nominal;
   r.curves = input.curves;
   std::stable_sort(r.curves.begin(), r.curves.end(),
                    [](const FlowCurve& a, const FlowCurve& b) { return a.phi < b.phi; });
