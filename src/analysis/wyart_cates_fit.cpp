@@ -138,15 +138,15 @@ std::vector<LogViscosityPoint> points_to_fit(const std::vector<FlowCurve>& curve
       // The relative error of eta: the rate's where the stress was imposed;
       // asked for, else the viscosity's own (an imposed rate has no error).
       double relative = p.shear_rate > 0.0 ? p.shear_rate_err / p.shear_rate : 0.0;
-      if (settings.weights == Weights::Errors && !(relative > 0.0))
-        relative = p.viscosity_err / p.viscosity;
-      if (!(relative > 0.0) && weighted && !unweighed) unweighed = {&c, &p};
+      if (settings.weights == Weights::Errors) {
+        if (!(relative > 0.0)) relative = p.viscosity_err / p.viscosity;
+        if (!(relative > 0.0) && !unweighed) unweighed = {&c, &p};
+      }
       weighted = weighted && relative > 0.0;
       data.push_back({bulk ? p.phi_measured : c.phi, p.shear_stress, std::log(p.viscosity),
                       std::max(relative, settings.noise_floor)});
     }
   }
-  if (settings.weights != Weights::Errors) unweighed = {};
   if (!weighted)
     for (LogViscosityPoint& d : data) d.s = 1.0;
   return data;
