@@ -52,7 +52,9 @@ def test_ramps_are_classified_and_other_cells_left_out(tmp_path, monkeypatch, ca
         "G,0.62,0.1,1,failed,,,,,,"])                       # a ramp whose chain broke
     write_sweep(tmp_path / "walls", ["E,0.58,1,1,done,false,true,0.58,0,0.8.0,"],
                 SWEEP.replace("'lees-edwards'", "'walls'"))
-    bulk_flow_states.main(["bulk_flow_states", "le", "walls"])
+    write_sweep(tmp_path / "refine", ["H,0.6,1,20,done,true,true,0.60,0,0.8.0,jammed"],
+                "[sweep]\nrefines = '/runs/le'\n" + SWEEP)
+    bulk_flow_states.main(["bulk_flow_states", "le", "walls", "refine"])
     out = capsys.readouterr()
     rows = out.out.splitlines()
     assert rows[0] == bulk_flow_states.HEADER
@@ -63,6 +65,7 @@ def test_ramps_are_classified_and_other_cells_left_out(tmp_path, monkeypatch, ca
     assert "walls/flowcurves.csv E: cell.boundary = walls" in out.err
     assert "le/flowcurves.csv F: the ramp is not finished (1 points pending or failed)" in out.err
     assert "le/flowcurves.csv G: the ramp is not finished" in out.err
+    assert "refine/flowcurves.csv: a refinement of the ramps in /runs/le" in out.err
 
 
 def test_contradicting_curves_stop_the_script(tmp_path, monkeypatch):

@@ -38,19 +38,39 @@ void set_phi(Config& config, double phi) {
 // of tests/sweep/ramp_jam_test.cpp), and so does its cold start's. phi_bulk
 // is a time average, not the final state; "bulk" measures the final state.
 // In a Lees–Edwards box phi_bulk is the box's at every point: no shift.
+// A refinement's point (sweep.refines) reads the refined ramp's summaries
+// from its folders.
 void match_time_averaged_bulk(const SweepPlan& plan, std::size_t i,
                               const std::vector<PointRecord>& records, Config& config) {
-  std::size_t first = i;
-  while (plan.points[first].continues_from) first = *plan.points[first].continues_from;
-  const double shift =
-      summary_phi_bulk(records[*plan.points[i].continues_from]) - summary_phi_bulk(records[first]);
+  const SweepPoint& p = plan.points[i];
+  double shift = 0.0;
+  if (p.refines) {
+    const auto phi_bulk_in = [](const std::filesystem::path& folder) {
+      PointRecord r;
+      r.summary = nlohmann::json::parse(
+          read_input_file(folder / "summary.json", "refined ramp's summary"), nullptr, false);
+      return summary_phi_bulk(r);
+    };
+    shift = phi_bulk_in(p.refines->ramp.back()) - phi_bulk_in(p.refines->ramp.front());
+  } else {
+    std::size_t first = i;
+    while (plan.points[first].continues_from) first = *plan.points[first].continues_from;
+    shift = summary_phi_bulk(records[*p.continues_from]) - summary_phi_bulk(records[first]);
+  }
   if (std::isfinite(shift) && shift != 0.0) set_phi(config, config.cell()->phi + shift);
+}
+
+// The folder of the run whose final state continued point i started from.
+std::filesystem::path start_folder(const SweepPlan& plan, std::size_t i,
+                                   const std::filesystem::path& out) {
+  const SweepPoint& p = plan.points[i];
+  return p.refines ? p.refines->ramp.back() : out / plan.points[*p.continues_from].folder;
 }
 
 nlohmann::json bulk_choice(const SweepPlan& plan, std::size_t i, const Config& config,
                            const std::filesystem::path& out, const std::atomic<bool>* stop) {
-  const SweepPoint& before = plan.points[*plan.points[i].continues_from];
-  const auto checkpoint = out / before.folder / "checkpoint.bin";
+  const auto before = start_folder(plan, i, out);
+  const auto checkpoint = before / "checkpoint.bin";
   const double target = checkpoint_bulk_fraction(checkpoint);
   const StartingFractionMatch m =
       match_starting_bulk(config, target, kBulkTolerance, kBulkMaxPackings, stop);
@@ -62,7 +82,7 @@ nlohmann::json bulk_choice(const SweepPlan& plan, std::size_t i, const Config& c
   nlohmann::json j;
   j["rule"] = "bulk";
   j["target_phi_bulk"] = target;
-  j["target_from"] = before.folder + "/checkpoint.bin";
+  j["target_from"] = std::filesystem::proximate(checkpoint, out).generic_string();
   j["tolerance"] = kBulkTolerance;
   j["phi"] = m.phi;
   j["phi_bulk_start"] = m.phi_bulk_start;
@@ -80,7 +100,7 @@ ColdStartChoice choose_cold_start(const SweepPlan& plan, std::size_t jammed,
                                   const std::atomic<bool>* stop) {
   const SweepPoint& p = plan.points[jammed];
   ColdStartChoice c{p.cold_start.value_or(p.config), nullptr};
-  if (!p.continues_from || c.config.cell() == nullptr) return c;
+  if (!is_continued(p) || c.config.cell() == nullptr) return c;
   switch (plan.settings.cold_start_phi) {
     case SweepSettings::ColdStartPhi::Nominal:
       return c;

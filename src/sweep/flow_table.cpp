@@ -170,9 +170,11 @@ std::string flowcurves_csv(const SweepPlan& plan, const std::vector<PointRecord>
     row.push_back(summary_field(r, "phi"));
     for (auto c : kSummaryAfter) row.push_back(summary_field(r, c));
     row.push_back(field(sample_label(plan, p)));
-    row.push_back(p.continues_from ? field(plan.points[*p.continues_from].folder) : "cold");
+    row.push_back(p.continues_from ? field(plan.points[*p.continues_from].folder)
+                  : p.refines      ? field(p.refines->shown)
+                                   : "cold");
     row.push_back(field(p.folder));
-    const bool confirmable = plan.settings.confirm_jams && p.continues_from && jammed(r);
+    const bool confirmable = plan.settings.confirm_jams && is_continued(p) && jammed(r);
     row.push_back(!confirmable                          ? ""
                   : !r.cold_start.is_object()           ? "pending"
                   : r.cold_start.value("jammed", false) ? "jammed"

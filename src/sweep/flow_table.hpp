@@ -30,7 +30,9 @@
 //                point along its curve (cell.phi, fluid.lambda,
 //                cell.shear_stress, cell.shear_rate, cell.normal_stress;
 //                dilatant analyze groups rows by phi and sample);
-//   start        "cold" (a new packing) or the folder of the point it continues from;
+//   start        "cold" (a new packing) or the folder of the point it continues from
+//                (in a refinement, sweep.refines: the refined ramp's point's,
+//                relative to the working directory);
 //   dir          the point's run folder, relative to DIR;
 //   jam_cold_start  for a continued point that jammed (sweep.confirm_jams):
 //                jammed | flowed (its cold start in DIR/dir/cold-start/) or

@@ -28,7 +28,7 @@ constexpr std::string_view kSweepTable = "sweep";
 constexpr std::string_view kPointsTable = "points";
 constexpr std::array kSettingsKeys = {
     "jobs"sv,        "continuation"sv, "continuation_strain"sv, "continuation_transient_strain"sv,
-    "stop_at_jam"sv, "confirm_jams"sv, "cold_start_phi"sv};
+    "stop_at_jam"sv, "confirm_jams"sv, "cold_start_phi"sv,      "refines"sv};
 // Keys whose single value is an array: swept only when given a list of arrays.
 constexpr std::array kArrayKeys = {"cell.size"sv, "scene.gravity"sv, "scene.box"sv,
                                    "scene.periodic"sv, "scene.planes"sv};
@@ -209,7 +209,8 @@ Position position(const toml::node& n, const std::string& source, std::size_t di
   return {0, n.source().begin.line, n.source().begin.column, discovered};
 }
 
-SweepSettings read_settings(const toml::table& t, const std::string& source) {
+SweepSettings read_settings(const toml::table& t, const std::string& source,
+                            const std::filesystem::path& base_dir) {
   SweepSettings s;
   for (const auto& [key, value] : t) {
     // A reference, not the structured binding, for the lambda to capture (a
@@ -240,6 +241,10 @@ SweepSettings read_settings(const toml::table& t, const std::string& source) {
       s.cold_start_phi = *v == "matched" ? SweepSettings::ColdStartPhi::Matched
                          : *v == "bulk"  ? SweepSettings::ColdStartPhi::Bulk
                                          : SweepSettings::ColdStartPhi::Nominal;
+    } else if (key.str() == "refines") {
+      const auto v = node.value_exact<std::string>();
+      if (!v || v->empty()) fail("expected the folder of a ramp sweep (its --out)");
+      s.refines = std::filesystem::absolute(base_dir / *v).lexically_normal();
     } else if (key.str() == "continuation_strain" || key.str() == "continuation_transient_strain") {
       const auto v = node.value<double>();
       if (!v || !node.is_number()) fail("expected a number");
@@ -260,7 +265,7 @@ SweepSettings read_settings(const toml::table& t, const std::string& source) {
   }
   if (!s.continuation)
     for (const auto name : {"continuation_strain"sv, "continuation_transient_strain"sv,
-                            "stop_at_jam"sv, "confirm_jams"sv, "cold_start_phi"sv})
+                            "stop_at_jam"sv, "confirm_jams"sv, "cold_start_phi"sv, "refines"sv})
       if (const auto* node = t.get(name))
         throw InputError(
             fmt::format("{}: applies to continued points only, and sweep.continuation is false",
@@ -289,7 +294,7 @@ SweepPlan parse_sweep(std::string_view text, std::string source,
   // The shape of the sweep: its groups (the whole file, or one per [[points]]
   // table), each group's lists, and the swept keys in file order.
   Document first = read_document(text, source, o);
-  plan.settings = read_settings(first.settings, source);
+  plan.settings = read_settings(first.settings, source, base_dir);
   if (const auto* scene = first.base.get("scene"))
     throw InputError(
         fmt::format("{}: sweeps run the shear cell ([cell]); a [scene] cannot be swept",
@@ -365,7 +370,10 @@ SweepPlan parse_sweep(std::string_view text, std::string source,
   }
 
   detail::name_points(plan);
-  if (plan.settings.continuation) detail::link_continuations(plan);
+  if (!plan.settings.refines.empty())
+    detail::link_refinement(plan);
+  else if (plan.settings.continuation)
+    detail::link_continuations(plan);
   return plan;
 }
 

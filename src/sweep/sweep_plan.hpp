@@ -55,6 +55,18 @@
 // first point's run.strain and run.transient_strain), in its folder's
 // `cold-start/`; the table's `jam_cold_start` says whether that jammed too.
 //
+// Refinement (`refines = "DIR"`, with `continuation = true`): the points are
+// extra stresses of the ramps of another (continuation) sweep, whose folder is
+// DIR (relative to this file's folder), e.g. stress steps of 3 where a ramp of
+// steps of 10 bends. Each point starts from the final state of the refined
+// ramp's point at the nearest lower lambda (sweep_refinement.cpp): the points
+// are independent of each other, the ramp's history is that of the refined
+// ramp, and the stress step into each point is smaller than the ramp's own.
+// A point's configuration must equal its ramp's but for fluid.lambda; a point
+// above the ramp's jam is skipped (stop_at_jam), one whose starting point has
+// not finished yet waits (stays pending); the continuation settings apply to
+// every point.
+//
 // Every point's resolved configuration is validated like a run's; an error
 // names the sweep file, line and key, and the point. Sweeps run the shear cell
 // only ([scene] is an error). Each point gets solver.threads as configured
@@ -83,6 +95,16 @@ struct SweepSettings {
   // begins at the bulk fraction the jammed point began from (bulk).
   enum class ColdStartPhi { Nominal, Matched, Bulk };
   ColdStartPhi cold_start_phi = ColdStartPhi::Nominal;
+  // The folder of the sweep whose ramps this one refines (absolute), or empty.
+  std::filesystem::path refines;
+};
+
+// Where a refinement's point starts (sweep.refines): the refined ramp's points
+// up to the nearest lower lambda, in order of lambda (absolute folders). The
+// last is the state it starts from; the first is the ramp's cold start.
+struct RampStart {
+  std::vector<std::filesystem::path> ramp;
+  std::string shown;  // the last one as the table shows it (relative to the working directory)
 };
 
 struct SweepPoint {
@@ -92,10 +114,14 @@ struct SweepPoint {
   std::vector<std::string> values;            // per swept key, its value as TOML text
   Config config;                              // resolved and validated
   std::optional<std::size_t> continues_from;  // index of the point whose final state it starts from
+  std::optional<RampStart> refines;           // or, in a refinement, the other sweep's point
   // A continued point's configuration as a cold start (run.strain and
   // run.transient_strain of a cold point): the run that confirms its jam.
   std::optional<Config> cold_start;
 };
+
+// The point starts from another run's final state (continuation or refinement).
+inline bool is_continued(const SweepPoint& p) { return p.continues_from || p.refines; }
 
 struct SweepPlan {
   std::string source;  // the sweep file, as given

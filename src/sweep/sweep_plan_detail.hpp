@@ -19,4 +19,14 @@ void name_points(SweepPlan& plan);
 // leave no measured part.
 void link_continuations(SweepPlan& plan);
 
+// Refinement (sweep.refines): each point's start in the refined sweep's ramps
+// and its continued strains (sweep_refinement.cpp). Throws InputError when
+// the refined folder is no ramp sweep, a point matches none of its ramps, or
+// has no lower lambda in its ramp to start from.
+void link_refinement(SweepPlan& plan);
+
+// A continued point's run.strain and run.transient_strain from the [sweep]
+// settings (its cold configuration kept as cold_start, for a jam's confirmation).
+void continue_point(const SweepPlan& plan, SweepPoint& p);
+
 }  // namespace dilatant::sweep::detail

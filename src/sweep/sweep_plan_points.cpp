@@ -83,7 +83,6 @@ void link_continuations(SweepPlan& plan) {
     key.erase(key.begin() + static_cast<long>(lambda_column));
     chains[key].push_back(p.index);
   }
-  const SweepSettings& s = plan.settings;
   for (auto& [key, chain] : chains) {
     std::sort(chain.begin(), chain.end(), [&](std::size_t a, std::size_t b) {
       return plan.points[a].config.fluid.lambda < plan.points[b].config.fluid.lambda;
@@ -91,19 +90,24 @@ void link_continuations(SweepPlan& plan) {
     for (std::size_t k = 1; k < chain.size(); ++k) {
       SweepPoint& p = plan.points[chain[k]];
       p.continues_from = chain[k - 1];
-      p.cold_start = p.config;
-      RunConfig& run = p.config.run;
-      if (s.continuation_strain) run.strain = *s.continuation_strain;
-      if (s.continuation_transient_strain) run.transient_strain = *s.continuation_transient_strain;
-      if (!(run.transient_strain < run.strain))
-        throw InputError(
-            fmt::format("{}: a continued point would run to strain {} with a transient of {}: set "
-                        "sweep.continuation_transient_strain below sweep.continuation_strain (or "
-                        "run.strain)",
-                        plan.source, run.strain, run.transient_strain));
-      p.config.resolved = to_toml(p.config);
+      continue_point(plan, p);
     }
   }
+}
+
+void continue_point(const SweepPlan& plan, SweepPoint& p) {
+  const SweepSettings& s = plan.settings;
+  p.cold_start = p.config;
+  RunConfig& run = p.config.run;
+  if (s.continuation_strain) run.strain = *s.continuation_strain;
+  if (s.continuation_transient_strain) run.transient_strain = *s.continuation_transient_strain;
+  if (!(run.transient_strain < run.strain))
+    throw InputError(
+        fmt::format("{}: a continued point would run to strain {} with a transient of {}: set "
+                    "sweep.continuation_transient_strain below sweep.continuation_strain (or "
+                    "run.strain)",
+                    plan.source, run.strain, run.transient_strain));
+  p.config.resolved = to_toml(p.config);
 }
 
 }  // namespace detail
@@ -137,18 +141,20 @@ std::string resolved_sweep_toml(const SweepPlan& plan) {
                        s.cold_start_phi == SweepSettings::ColdStartPhi::Matched ? "matched"
                        : s.cold_start_phi == SweepSettings::ColdStartPhi::Bulk  ? "bulk"
                                                                                 : "nominal");
+  if (!s.refines.empty())
+    out += fmt::format("refines = {}\n",
+                       toml_value_text(toml::value<std::string>(s.refines.string())));
   if (s.continuation_strain)
     out += fmt::format("continuation_strain = {}\n",
                        toml_value_text(toml::value<double>(*s.continuation_strain)));
   if (s.continuation_transient_strain)
     out += fmt::format("continuation_transient_strain = {}\n",
                        toml_value_text(toml::value<double>(*s.continuation_transient_strain)));
-  // The shared keys: those of a point that starts cold (continued points may
+  // The shared keys: those of a point as a cold start (continued points may
   // have their own run.strain, which the [sweep] settings give them again).
-  const auto cold = std::find_if(plan.points.begin(), plan.points.end(),
-                                 [](const SweepPoint& p) { return !p.continues_from; });
-  if (cold != plan.points.end()) {
-    std::istringstream lines(resolved_toml(cold->config));
+  if (!plan.points.empty()) {
+    const SweepPoint& first = plan.points.front();
+    std::istringstream lines(resolved_toml(first.cold_start.value_or(first.config)));
     for (std::string line; std::getline(lines, line);)
       if (line.rfind('#', 0) != 0) out += line + "\n";
   }

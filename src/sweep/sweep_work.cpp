@@ -12,6 +12,7 @@
 #include "io/output_folder.hpp"
 #include "io/text.hpp"
 #include "sweep/cold_start_choice.hpp"
+#include "sweep/refined_start.hpp"
 
 namespace dilatant::sweep {
 namespace {
@@ -150,7 +151,7 @@ ColdStartChoice SweepWork::cold_choice(std::size_t i, bool search) const {
 // A continued point that jammed, whose cold start has not run yet.
 bool SweepWork::needs_confirmation(std::size_t i) const {
   std::lock_guard lock(mutex_);
-  return plan_.settings.confirm_jams && plan_.points[i].continues_from && jammed(records_[i]) &&
+  return plan_.settings.confirm_jams && is_continued(plan_.points[i]) && jammed(records_[i]) &&
          !records_[i].cold_start.is_object();
 }
 
@@ -233,6 +234,20 @@ void SweepWork::run_point(std::size_t i) {
       return;  // the predecessor was interrupted: stays pending
     }
     start_from = options_.out / before.folder / "checkpoint.bin";
+  } else if (p.refines) {
+    RefinedStart start = refined_start(*p.refines, plan_.settings.stop_at_jam);
+    if (start.verdict == RefinedStart::Verdict::Wait) {
+      add_note(fmt::format("dilatant: {} {}", p.folder, start.why));
+      return;  // stays pending
+    }
+    if (start.verdict != RefinedStart::Verdict::Run) {
+      finish(
+          i,
+          start.verdict == RefinedStart::Verdict::Skip ? PointStatus::Skipped : PointStatus::Failed,
+          start.why);
+      return;
+    }
+    start_from = std::move(start.checkpoint);
   }
   {
     std::lock_guard lock(mutex_);

@@ -22,6 +22,7 @@
 #include "io/input_error.hpp"
 #include "sweep/cold_start_choice.hpp"
 #include "sweep/sweep_runner.hpp"
+#include "sweep/table_row.hpp"
 
 namespace dilatant::sweep::ramp_jam_test {
 namespace {
@@ -51,15 +52,7 @@ continuation = true
 )";
 
 std::map<std::string, std::string> row(const fs::path& table, std::size_t k) {
-  std::istringstream in(test::read_text(table));
-  std::string line;
-  std::getline(in, line);
-  const auto head = analysis::split_fields(line, ',');
-  for (std::size_t i = 0; i <= k; ++i) std::getline(in, line);
-  const auto f = analysis::split_fields(line, ',');
-  std::map<std::string, std::string> out;
-  for (std::size_t c = 0; c < head.size(); ++c) out[head[c]] = c < f.size() ? f[c] : "";
-  return out;
+  return test::table_row(table, k);
 }
 
 TEST(RampToJam, StopsAtTheFirstJamAndConfirmsItFromAColdStart) {

@@ -12,7 +12,10 @@ curve is named on stderr and left out. A curve is a sweep's `sample` (with
 its nominal phi and seed); its points are those with status `done`, in lambda.
 A curve with a point still `pending` or `failed` is a ramp not yet run to its
 end (a sweep in progress, or one whose chain broke): it is named on stderr and
-left out, since its last point says nothing of the stresses above it.
+left out, since its last point says nothing of the stresses above it. A
+refinement (`sweep.refines`: extra stresses of another sweep's ramps, each
+started from that ramp's state) is left out as a whole: the refined ramp's own
+table decides its row.
 
 * no point jammed: `cst`, up to its largest lambda (`max_lambda`);
 * its first (lowest-stress) point jammed: `jammed` (no flow at all);
@@ -117,6 +120,9 @@ def contradictions(rows):
 def rows_of(flow_file):
     with open(flow_file.parent / "sweep.toml", "rb") as f:
         sweep = tomllib.load(f)
+    refines = sweep.get("sweep", {}).get("refines")
+    if refines:
+        return [], [f"{flow_file}: a refinement of the ramps in {refines}, whose table decides"]
     curves, skipped = defaultdict(list), []
     unfinished = defaultdict(int)
     for r in csv.DictReader(open(flow_file)):

@@ -5,7 +5,8 @@ Usage: python3 python/dilatant/plots/sweep.py DIR
    or: dilatant.plots.sweep.draw(DIR)
 
 Reads DIR/flowcurves.csv, DIR/analysis/curves.csv (the regime of each curve,
-when present) and, per point, DIR/points/*/sommerfeld_hist.csv and config.toml.
+when present) and, per point, DIR/points/*/sommerfeld_hist.csv and config.toml;
+a refinement's (sweep.refines) curves include the points of the ramps it refines.
 Writes PNG and SVG into DIR/plots/ (no fitting here: the numbers come from C++):
 
   flow_curves.*       eta vs gamma_dot, log-log, every curve of the sweep: colour
@@ -36,13 +37,15 @@ from pathlib import Path
 
 if __package__:
     from .common import RATE, VISCOSITY, NothingToPlot, exit_missing, number, read_rows, save
-    from .pressure_sweep import is_pressure, mu_phi_figure
+    from .pressure_sweep import mu_phi_figure
+    from .sweep_curves import load_curves
 else:  # a script (the CLI: python3 sweep.py DIR): common.py lies beside it, a folder
     # not on the path under python3 -P or PYTHONSAFEPATH. Without matplotlib it exits 3.
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     from common import (RATE, VISCOSITY, NothingToPlot, exit_missing, number,  # noqa
                         read_rows, save)
-    from pressure_sweep import is_pressure, mu_phi_figure  # noqa
+    from pressure_sweep import mu_phi_figure  # noqa
+    from sweep_curves import load_curves  # noqa
 
 try:
     import tomllib
@@ -68,54 +71,6 @@ def stress_text(v):
     mantissa = v / 10 ** exponent
     head = "" if abs(mantissa - 1) < 5e-3 else f"{mantissa:.3g}\\times"
     return f"{head}10^{{{exponent}}}"
-
-
-class Curve:
-    """The finished points of one flow curve (one phi and sample), by stress."""
-
-    def __init__(self, phi, sample, rows):
-        self.phi = phi
-        self.sample = sample
-        self.rows = sorted(rows, key=lambda r: number(r["lambda"]))
-        self.mu0 = number(self.rows[0]["mu0"])
-        self.regime = ""
-        self.n = math.nan
-        self.bagnold = ""
-
-    def flowing(self):
-        return [r for r in self.rows if r["jammed"] != "true"]
-
-    def label(self):
-        text = f"$\\mu_0$ = {self.mu0:g}"
-        extra = " ".join(self.sample.split(" ")[1:])  # beyond "mu0=..."
-        if extra:
-            text += f" ({extra})"
-        text += f", $\\phi$ = {self.phi:g}"
-        if self.regime:
-            text += f": {self.regime}"
-            if self.regime == "cst" and math.isfinite(self.n):
-                text += f", n = {self.n:.2f}"
-                if self.bagnold == "true":
-                    text += " (Bagnold)"
-        return text
-
-
-def load_curves(out):
-    rows = [r for r in read_rows(out / "flowcurves.csv") if r["status"] == "done"]
-    groups = {}
-    for r in rows:
-        if is_pressure(r):  # phi measured, not fixed: mu(J), phi(J) instead
-            continue
-        groups.setdefault((number(r["phi"]), r["sample"]), []).append(r)
-    curves = [Curve(phi, sample, rs) for (phi, sample), rs in groups.items()]
-    curves.sort(key=lambda c: (c.mu0, c.sample, c.phi))
-    analysis = out / "analysis" / "curves.csv"
-    if analysis.exists():
-        for a in read_rows(analysis):
-            for c in curves:
-                if c.sample == a["sample"] and c.phi == number(a["phi"]):
-                    c.regime, c.n, c.bagnold = a["regime"], number(a["n"]), a.get("bagnold", "")
-    return rows, curves
 
 
 def settings_caption(out, rows, swept):
