@@ -50,6 +50,16 @@ for sweep in ${DILATANT_PAPER_SWEEPS:-$sweeps}; do
   if [[ $sweep == fig2 || $sweep == decisive-* ]]; then
     plots+=(fig1b_viscosity fig1c_sommerfeld fig1d_contacts)
   fi
+  if [[ $sweep == decisive-* ]]; then
+    # The sticking contacts point by point (why the Newtonian branch follows mu0).
+    PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.contact_states "$out/$sweep" \
+      > "$docs/$sweep/contact_states.csv.part"
+    mv "$docs/$sweep/contact_states.csv.part" "$docs/$sweep/contact_states.csv"
+    # The points' table of docs/paper-reproduction.md "The decisive study".
+    PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.ramp_table "$docs/$sweep" \
+      > "$docs/$sweep/points_table.md.part"
+    mv "$docs/$sweep/points_table.md.part" "$docs/$sweep/points_table.md"
+  fi
   for plot in "${plots[@]}"; do
     if [[ -f $out/$sweep/plots/$plot.png ]]; then cp "$out/$sweep/plots/$plot".{png,svg} "$docs/$sweep/"; fi
   done
