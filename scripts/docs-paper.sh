@@ -31,8 +31,15 @@ sweeps="fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-
 dst-map dst-map-mu0 dst-map-phi dst-map-dense dst-map-seeds dst-size dst-size-phi dst-map-films sc-scaling
 lees-edwards-fig2 lees-edwards-dst decisive-le decisive-le-refine decisive-le-mu0 decisive-walls bulk-boundary"
 for sweep in ${DILATANT_PAPER_SWEEPS:-$sweeps}; do
+  # A refinement (NAME-refine.toml, sweep.refines) refines NAME's ramps in $out.
+  refines=()
+  if [[ $sweep == *-refine ]]; then
+    refines=(--set "sweep.refines=\"$(realpath -m "$out/${sweep%-refine}")\"")
+  fi
   # A failed point does not stop the others (exit 1): copy what there is, go on.
-  ./build/dilatant sweep "examples/paper/$sweep.toml" --out "$out/$sweep" "$@" || status=$?
+  ./build/dilatant sweep "examples/paper/$sweep.toml" --out "$out/$sweep" "${refines[@]}" "$@" ||
+    status=$?
+  if [[ ! -f $out/$sweep/flowcurves.csv ]]; then continue; fi  # refused before it ran
   mkdir -p "$docs/$sweep"
   cp "$out/$sweep/flowcurves.csv" "$out/$sweep/sweep.toml" "$docs/$sweep/"
   if [[ -d $out/$sweep/analysis ]]; then cp "$out/$sweep/analysis/curves.csv" "$docs/$sweep/"; fi

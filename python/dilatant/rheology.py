@@ -91,7 +91,7 @@ class WyartCatesResult:
 
 
 def fit_wyart_cates(input, out=None, *, alpha=None, beta=None, fit_alpha=False, fit_beta=False,
-                    phi="auto", weights="auto", plots=True):
+                    phi_basis="auto", weights="auto", plots=True):
     """Fits the Wyart–Cates model (phi_0, phi_m, sigma*, A; alpha and beta held
     at 2 and 1 unless fit_alpha/fit_beta, or held at the values given) to each
     sample of a manifest (.toml) or a sweep's flowcurves.csv, as `dilatant
@@ -99,7 +99,7 @@ def fit_wyart_cates(input, out=None, *, alpha=None, beta=None, fit_alpha=False, 
     is kept (and no plot). No sample fitted raises ConfigError with each
     sample's reason.
 
-    phi, the volume fraction fitted (`--wc-phi`): 'bulk', each point's
+    phi_basis, the volume fraction fitted (`--wc-phi`): 'bulk', each point's
     measured phi_bulk (a sweep table's; a point without one refuses the fit),
     'nominal', each curve's phi, or 'auto', bulk when every fitted point of
     the input has one, else nominal. weights, the residuals' (`--wc-weights`):
@@ -109,7 +109,7 @@ def fit_wyart_cates(input, out=None, *, alpha=None, beta=None, fit_alpha=False, 
     value raises ConfigError naming the argument and the allowed ones. The
     JSON says which basis each sample was fitted in (`phi_basis`)."""
     settings = dict(alpha=alpha, beta=beta, fit_alpha=bool(fit_alpha), fit_beta=bool(fit_beta),
-                    phi=str(phi), weights=str(weights))
+                    phi=str(phi_basis), weights=str(weights))
     return _write_and_read(_core.fit_wyart_cates, WyartCatesResult, "wyart_cates", input, out,
                            plots, settings, "plot skipped")
 

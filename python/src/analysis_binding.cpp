@@ -114,7 +114,7 @@ py::dict fit_wyart_cates(const std::filesystem::path& input, const std::filesyst
   s.beta = beta.value_or(s.beta);
   s.fit_alpha = fit_alpha;
   s.fit_beta = fit_beta;
-  s.phi = choice("phi", phi, analysis::kPhiBasisNames);
+  s.phi = choice("phi_basis", phi, analysis::kPhiBasisNames);
   s.weights = choice("weights", weights, analysis::kWeightsNames);
   check(s.alpha > 0.0 && s.alpha < 20.0, "alpha", s.alpha, "must be in (0, 20)");
   check(s.beta > 0.0 && s.beta < 20.0, "beta", s.beta, "must be in (0, 20)");

@@ -1,7 +1,7 @@
 """The Wyart–Cates fit from Python (dilatant.fit_wyart_cates, and
 dilatant.predict(model=...)): it recovers the parameters of noisy synthetic
 flow curves it did not see, writes the CLI's files, fits in the fraction
-(phi=) and with the weights (weights=) asked for as the CLI's --wc-phi and
+(phi_basis=) and with the weights (weights=) asked for as the CLI's --wc-phi and
 --wc-weights do, and refuses what it cannot fit with the CLI's reason."""
 import json
 import math
@@ -100,7 +100,7 @@ def test_what_cannot_be_fitted_raises_the_reason(tmp_path):
 
 def test_phi_bulk_and_nominal_fit_different_fractions(tmp_path):
     table = write_sweep(tmp_path / "flowcurves.csv", NOMINAL, dilation=DILATION)
-    fits = {phi: dilatant.fit_wyart_cates(table, phi=phi).fit
+    fits = {phi: dilatant.fit_wyart_cates(table, phi_basis=phi).fit
             for phi in ("auto", "bulk", "nominal")}
     bulk, nominal = fits["bulk"]["samples"]["mu0=1"], fits["nominal"]["samples"]["mu0=1"]
     assert (bulk["phi_basis"], nominal["phi_basis"]) == ("bulk", "nominal")
@@ -115,7 +115,7 @@ def test_phi_bulk_and_nominal_fit_different_fractions(tmp_path):
     plain = write_sweep(tmp_path / "plain.csv", [0.45, 0.50, 0.53, 0.55, 0.575])
     assert dilatant.fit_wyart_cates(plain).fit["samples"]["mu0=1"]["phi_basis"] == "nominal"
     with pytest.raises(dilatant.ConfigError, match="phi_bulk"):
-        dilatant.fit_wyart_cates(plain, phi="bulk")
+        dilatant.fit_wyart_cates(plain, phi_basis="bulk")
 
 
 def test_weights_uniform_and_errors(tmp_path):
@@ -140,7 +140,7 @@ def test_weights_uniform_and_errors(tmp_path):
 
 def test_phi_and_weights_give_the_cli_numbers(cli, tmp_path):
     table = write_sweep(tmp_path / "flowcurves.csv", NOMINAL, dilation=DILATION)
-    py = dilatant.fit_wyart_cates(table, phi="nominal", weights="uniform")
+    py = dilatant.fit_wyart_cates(table, phi_basis="nominal", weights="uniform")
     run_cli(cli, "analyze", table, "--out", tmp_path / "cli", "--model", "wyart-cates",
             "--wc-phi", "nominal", "--wc-weights", "uniform", "-q", "--no-plots")
     cli_fit = json.loads((tmp_path / "cli" / "wyart_cates.json").read_text())
@@ -150,12 +150,12 @@ def test_phi_and_weights_give_the_cli_numbers(cli, tmp_path):
                 "phi"):
         assert a[key] == b[key], key
     # As the CLI, the names are read case aside.
-    assert dilatant.fit_wyart_cates(table, phi="Nominal", weights="UNIFORM").fit == py.fit
+    assert dilatant.fit_wyart_cates(table, phi_basis="Nominal", weights="UNIFORM").fit == py.fit
 
 
 @pytest.mark.parametrize("argument, value, allowed", [
-    ("phi", "median", "auto, nominal, bulk"),
-    ("phi", 0.55, "auto, nominal, bulk"),  # a volume fraction is not a basis
+    ("phi_basis", "median", "auto, nominal, bulk"),
+    ("phi_basis", 0.55, "auto, nominal, bulk"),  # a volume fraction is not a basis
     ("weights", "poisson", "auto, uniform, errors"),
 ])
 def test_a_bad_phi_or_weights_raises_naming_the_argument(tmp_path, argument, value, allowed):

@@ -38,25 +38,26 @@ void set_phi(Config& config, double phi) {
 // of tests/sweep/ramp_jam_test.cpp), and so does its cold start's. phi_bulk
 // is a time average, not the final state; "bulk" measures the final state.
 // In a Lees–Edwards box phi_bulk is the box's at every point: no shift.
-// A refinement's point (sweep.refines) reads the refined ramp's summaries
-// from its folders.
+// In a refinement (sweep.refines) the ramp's first point is the refined
+// ramp's cold start, and a segment's lowest point started from the refined
+// ramp's point below it: their summaries are read from those folders.
 void match_time_averaged_bulk(const SweepPlan& plan, std::size_t i,
                               const std::vector<PointRecord>& records, Config& config) {
+  const auto phi_bulk_in = [](const std::filesystem::path& folder) {
+    PointRecord r;
+    r.summary = nlohmann::json::parse(
+        read_input_file(folder / "summary.json", "refined ramp's summary"), nullptr, false);
+    return summary_phi_bulk(r);
+  };
   const SweepPoint& p = plan.points[i];
-  double shift = 0.0;
-  if (p.refines) {
-    const auto phi_bulk_in = [](const std::filesystem::path& folder) {
-      PointRecord r;
-      r.summary = nlohmann::json::parse(
-          read_input_file(folder / "summary.json", "refined ramp's summary"), nullptr, false);
-      return summary_phi_bulk(r);
-    };
-    shift = phi_bulk_in(p.refines->ramp.back()) - phi_bulk_in(p.refines->ramp.front());
-  } else {
-    std::size_t first = i;
-    while (plan.points[first].continues_from) first = *plan.points[first].continues_from;
-    shift = summary_phi_bulk(records[*p.continues_from]) - summary_phi_bulk(records[first]);
-  }
+  std::size_t head = i;
+  while (plan.points[head].continues_from) head = *plan.points[head].continues_from;
+  const RampStart* refined = plan.points[head].refines ? &*plan.points[head].refines : nullptr;
+  const double first =
+      refined ? phi_bulk_in(refined->ramp.front()) : summary_phi_bulk(records[head]);
+  const double previous = p.continues_from ? summary_phi_bulk(records[*p.continues_from])
+                                           : phi_bulk_in(p.refines->ramp.back());
+  const double shift = previous - first;
   if (std::isfinite(shift) && shift != 0.0) set_phi(config, config.cell()->phi + shift);
 }
 

@@ -136,7 +136,8 @@ std::string sample_label(const SweepPlan& plan, const SweepPoint& point) {
   return label;
 }
 
-std::string flowcurves_csv(const SweepPlan& plan, const std::vector<PointRecord>& records) {
+std::string flowcurves_csv(const SweepPlan& plan, const std::vector<PointRecord>& records,
+                           const std::filesystem::path& folder) {
   std::vector<std::string> header = plan.keys;
   for (auto c : {"point"sv, "status"sv, "error"sv, "phi"sv, "mu0"sv, "lambda"sv})
     header.emplace_back(c);
@@ -171,7 +172,11 @@ std::string flowcurves_csv(const SweepPlan& plan, const std::vector<PointRecord>
     for (auto c : kSummaryAfter) row.push_back(summary_field(r, c));
     row.push_back(field(sample_label(plan, p)));
     row.push_back(p.continues_from ? field(plan.points[*p.continues_from].folder)
-                  : p.refines      ? field(p.refines->shown)
+                  : p.refines      ? field(folder.empty() ? p.refines->ramp.back().generic_string()
+                                                          : std::filesystem::proximate(
+                                                                p.refines->ramp.back(),
+                                                                std::filesystem::absolute(folder))
+                                                                .generic_string())
                                    : "cold");
     row.push_back(field(p.folder));
     const bool confirmable = plan.settings.confirm_jams && is_continued(p) && jammed(r);

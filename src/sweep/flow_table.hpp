@@ -31,8 +31,8 @@
 //                cell.shear_stress, cell.shear_rate, cell.normal_stress;
 //                dilatant analyze groups rows by phi and sample);
 //   start        "cold" (a new packing) or the folder of the point it continues from
-//                (in a refinement, sweep.refines: the refined ramp's point's,
-//                relative to the working directory);
+//                (the lowest extra point of a refinement's segment, sweep.refines:
+//                the refined ramp's point's, relative to DIR);
 //   dir          the point's run folder, relative to DIR;
 //   jam_cold_start  for a continued point that jammed (sweep.confirm_jams):
 //                jammed | flowed (its cold start in DIR/dir/cold-start/) or
@@ -46,6 +46,7 @@
 //                (cold-start/phi_choice.json); else empty.
 // Booleans are true/false, numbers the shortest text that reads back exactly;
 // a field with ',' or '"' is quoted (with '"' inside turned into ').
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
@@ -72,7 +73,10 @@ struct PointRecord {
 // The point ran and jammed.
 bool jammed(const PointRecord& r);
 
-std::string flowcurves_csv(const SweepPlan& plan, const std::vector<PointRecord>& records);
+// `out` is the sweep's folder: a refinement's `start` is named relative to it
+// (absolute when `out` is empty).
+std::string flowcurves_csv(const SweepPlan& plan, const std::vector<PointRecord>& records,
+                           const std::filesystem::path& out = {});
 
 // The curve label of the `sample` column.
 std::string sample_label(const SweepPlan& plan, const SweepPoint& point);

@@ -4,25 +4,32 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/input_error.hpp"
 #include "io/text.hpp"
 
 namespace dilatant::sweep {
 
-// In order of lambda, so that a jam below the starting point skips the point
-// before an unfinished point above the jam (never run: stop_at_jam) could make
-// it wait for ever.
+// In order of lambda, so that a jam below the starting point is met before an
+// unfinished point above it, which its ramp never runs (stop_at_jam) and would
+// leave this one waiting for ever.
 RefinedStart refined_start(const RampStart& start, bool stop_at_jam) {
   using Verdict = RefinedStart::Verdict;
+  std::filesystem::path jam;  // a jammed point of the ramp below the start
   for (const auto& folder : start.ramp) {
     if (std::filesystem::is_regular_file(folder / "error.txt"))
       return {Verdict::Fail,
               fmt::format("not run: the refined ramp's point {} failed", folder.string()),
               {}};
-    if (!std::filesystem::is_regular_file(folder / "summary.json"))
+    if (!std::filesystem::is_regular_file(folder / "summary.json")) {
+      if (!jam.empty())
+        return {Verdict::Skip,
+                fmt::format("not run: the refined ramp stopped at its jam at {}", jam.string()),
+                {}};
       return {Verdict::Wait,
               fmt::format("waits for {}, which has not finished: run this sweep again when it has",
                           folder.string()),
               {}};
+    }
     nlohmann::json summary;
     try {
       summary = nlohmann::json::parse(read_input_file(folder / "summary.json", "point's summary"));
@@ -32,12 +39,24 @@ RefinedStart refined_start(const RampStart& start, bool stop_at_jam) {
               {}};
     }
     const auto jammed = summary.find("jammed");
-    if (stop_at_jam && jammed != summary.end() && jammed->is_boolean() && jammed->get<bool>())
-      return {Verdict::Skip,
-              fmt::format("not run: the refined ramp jammed at {}", folder.string()),
-              {}};
+    if (jammed != summary.end() && jammed->is_boolean() && jammed->get<bool>()) {
+      if (stop_at_jam)
+        return {Verdict::Skip,
+                fmt::format("not run: the refined ramp jammed at {}", folder.string()),
+                {}};
+      if (jam.empty()) jam = folder;  // runs from the jammed state (stop_at_jam = false)
+    }
   }
   return {Verdict::Run, "", start.ramp.back() / "checkpoint.bin"};
+}
+
+void refuse_refining_into_itself(const SweepPlan& plan, const std::filesystem::path& out) {
+  std::error_code ec;  // a folder that does not exist yet is not the refined one
+  if (!plan.settings.refines.empty() && std::filesystem::equivalent(out, plan.settings.refines, ec))
+    throw InputError(fmt::format(
+        "{}: --out {} is the folder this sweep refines (sweep.refines); give the refinement a "
+        "folder of its own",
+        plan.source, out.string()));
 }
 
 }  // namespace dilatant::sweep

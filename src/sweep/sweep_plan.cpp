@@ -265,7 +265,7 @@ SweepSettings read_settings(const toml::table& t, const std::string& source,
   }
   if (!s.continuation)
     for (const auto name : {"continuation_strain"sv, "continuation_transient_strain"sv,
-                            "stop_at_jam"sv, "confirm_jams"sv, "cold_start_phi"sv, "refines"sv})
+                            "stop_at_jam"sv, "confirm_jams"sv, "cold_start_phi"sv})
       if (const auto* node = t.get(name))
         throw InputError(
             fmt::format("{}: applies to continued points only, and sweep.continuation is false",
@@ -370,9 +370,13 @@ SweepPlan parse_sweep(std::string_view text, std::string source,
   }
 
   detail::name_points(plan);
-  if (!plan.settings.refines.empty())
+  if (!plan.settings.refines.empty()) {
+    if (!plan.settings.continuation)
+      throw InputError(fmt::format(
+          "{}: sweep.refines needs sweep.continuation = true (its points continue a ramp)",
+          plan.source));
     detail::link_refinement(plan);
-  else if (plan.settings.continuation)
+  } else if (plan.settings.continuation)
     detail::link_continuations(plan);
   return plan;
 }

@@ -57,15 +57,14 @@
 //
 // Refinement (`refines = "DIR"`, with `continuation = true`): the points are
 // extra stresses of the ramps of another (continuation) sweep, whose folder is
-// DIR (relative to this file's folder), e.g. stress steps of 3 where a ramp of
-// steps of 10 bends. Each point starts from the final state of the refined
-// ramp's point at the nearest lower lambda (sweep_refinement.cpp): the points
-// are independent of each other, the ramp's history is that of the refined
-// ramp, and the stress step into each point is smaller than the ramp's own.
-// A point's configuration must equal its ramp's but for fluid.lambda; a point
-// above the ramp's jam is skipped (stop_at_jam), one whose starting point has
-// not finished yet waits (stays pending); the continuation settings apply to
-// every point.
+// DIR (relative to this file's folder), e.g. stress steps of 2 where a ramp of
+// steps of 10 bends (sweep_refinement.cpp). The extra points between two of a
+// ramp's points are a short ramp of their own: the lowest starts from the
+// final state of the ramp's point below it, each next one from the previous
+// extra point's; the segments run side by side. A point's configuration must
+// equal its ramp's but for fluid.lambda; a point above the ramp's jam is
+// skipped, one whose starting point has not finished yet waits (stays
+// pending); the continuation settings apply to every point.
 //
 // Every point's resolved configuration is validated like a run's; an error
 // names the sweep file, line and key, and the point. Sweeps run the shear cell
@@ -99,12 +98,12 @@ struct SweepSettings {
   std::filesystem::path refines;
 };
 
-// Where a refinement's point starts (sweep.refines): the refined ramp's points
-// up to the nearest lower lambda, in order of lambda (absolute folders). The
-// last is the state it starts from; the first is the ramp's cold start.
+// Where the lowest extra point of a refinement's segment starts
+// (sweep.refines): the refined ramp's points up to the nearest lower lambda, in
+// order of lambda (absolute folders). The last is the state it starts from;
+// the first is the ramp's cold start.
 struct RampStart {
   std::vector<std::filesystem::path> ramp;
-  std::string shown;  // the last one as the table shows it (relative to the working directory)
 };
 
 struct SweepPoint {
@@ -114,7 +113,7 @@ struct SweepPoint {
   std::vector<std::string> values;            // per swept key, its value as TOML text
   Config config;                              // resolved and validated
   std::optional<std::size_t> continues_from;  // index of the point whose final state it starts from
-  std::optional<RampStart> refines;           // or, in a refinement, the other sweep's point
+  std::optional<RampStart> refines;  // or, a refinement segment's lowest point, the other sweep's
   // A continued point's configuration as a cold start (run.strain and
   // run.transient_strain of a cold point): the run that confirms its jam.
   std::optional<Config> cold_start;

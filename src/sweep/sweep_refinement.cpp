@@ -1,43 +1,34 @@
 // A refinement of another sweep's ramps (sweep.refines; sweep_plan.hpp): each
 // point finds its ramp in the refined sweep (the one whose configuration is
-// its own but for fluid.lambda) and starts from the final state of that ramp's
-// point at the nearest lower lambda.
+// its own but for fluid.lambda). The extra points between two of the ramp's
+// points form a short ramp of their own: the lowest starts from the final
+// state of the ramp's point below, each next one from the previous extra
+// point's.
 //
-// Why the nearest lower lambda, and not the refinement's own previous point: a
-// ramp's state at a stress is the history of the stresses below it, and the
-// refined ramp has run them; starting each extra point from it keeps that
-// history, makes the step into the point smaller than the ramp's own step
-// (issue 34: stress points at most a factor 3 apart where a curve bends), and
-// leaves the extra points independent of each other, so they run side by side.
+// Why so: a ramp's state at a stress is the history of the stresses below it,
+// and the refined ramp has run them; starting each segment from it keeps that
+// history, and chaining the segment's points keeps every stress step as small
+// as the spacing of the extra points (issue 34: stress points at most a factor
+// 3 apart where a curve bends; lambda 10^(1/6) apart is a stress step of 2.15).
+// Segments are independent of each other and run side by side.
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "io/config_compare.hpp"
 #include "io/input_error.hpp"
+#include "io/text.hpp"
 #include "sweep/sweep_plan_detail.hpp"
 
 namespace dilatant::sweep::detail {
 namespace {
 
-// The dotted keys at which two resolved configurations differ.
-void differences(const toml::table& a, const toml::table& b, const std::string& prefix,
-                 std::vector<std::string>& out) {
-  for (const auto& [k, v] : a) {
-    const std::string key = prefix + std::string(k.str());
-    const toml::node* w = b.get(k.str());
-    if (w == nullptr)
-      out.push_back(key);
-    else if (v.is_table() && w->is_table())
-      differences(*v.as_table(), *w->as_table(), key + ".", out);
-    else if (toml_value_text(v) != toml_value_text(*w))
-      out.push_back(key);
-  }
-  for (const auto& [k, v] : b)
-    if (a.get(k.str()) == nullptr) out.push_back(prefix + std::string(k.str()));
-}
+using namespace std::string_view_literals;
 
 // The refined sweep's ramps: each its points' indices in order of lambda.
 std::vector<std::vector<std::size_t>> ramps_of(const SweepPlan& refined) {
@@ -55,59 +46,78 @@ std::vector<std::vector<std::size_t>> ramps_of(const SweepPlan& refined) {
 
 SweepPlan load_refined(const SweepPlan& plan) {
   const auto dir = plan.settings.refines;
-  SweepPlan refined;
+  const auto fail = [&](const std::string& why) {
+    return InputError(fmt::format("{}: sweep.refines = {}: {}", plan.source, dir.string(), why));
+  };
+  const auto file = dir / "sweep.toml";
+  toml::table head;
   try {
-    refined = load_sweep(dir / "sweep.toml", {});
+    head = toml::parse(read_input_file(file, "refined sweep"), file.string());
+  } catch (const toml::parse_error& e) {
+    throw fail(fmt::format("{}: invalid TOML: {}", file.string(), e.description()));
   } catch (const InputError& e) {
-    throw InputError(
-        fmt::format("{}: sweep.refines = {}: {}", plan.source, dir.string(), e.what()));
+    throw fail(e.what());
   }
-  if (!refined.settings.continuation || !refined.settings.refines.empty())
-    throw InputError(fmt::format(
-        "{}: sweep.refines = {}: not a ramp sweep ({}); refine a sweep with "
-        "sweep.continuation = true",
-        plan.source, dir.string(),
-        refined.settings.continuation ? "it refines another sweep itself" : "no continuation"));
-  return refined;
+  // Checked before the file is read as a sweep: a refinement of a refinement
+  // (or of itself) would otherwise load its own refined sweep, and so on.
+  if (head["sweep"]["refines"])
+    throw fail("it refines another sweep itself; refine the ramp sweep it refines");
+  if (!head["sweep"]["continuation"].value_or(false))
+    throw fail("not a ramp sweep (no sweep.continuation); refine a sweep with continuation = true");
+  try {
+    return load_sweep(file, {});
+  } catch (const InputError& e) {
+    throw fail(e.what());
+  }
 }
 
 std::string point_name(const SweepPoint& p) {
   return fmt::format("point {} ({})", p.index, p.label);
 }
 
+// The ramp whose first (cold) point is `p`'s configuration but for lambda, or
+// an InputError naming how the closest ramp (most swept keys equal) differs.
+const std::vector<std::size_t>& ramp_of(const SweepPlan& plan, const SweepPoint& p,
+                                        const SweepPlan& refined,
+                                        const std::vector<std::vector<std::size_t>>& ramps) {
+  constexpr std::string_view kLambda[] = {"fluid.lambda"sv};
+  const std::vector<std::size_t>* closest = nullptr;
+  int closest_equal = -1;
+  for (const auto& r : ramps) {
+    const SweepPoint& first = refined.points[r.front()];
+    if (!config_difference(resolved_toml(first.config), p.config, "here", kLambda)) return r;
+    int equal = 0;
+    for (std::size_t k = 0; k < refined.keys.size(); ++k) {
+      const auto* mine = find_key(p.config.resolved, refined.keys[k]);
+      equal += mine != nullptr && toml_value_text(*mine) == first.values[k];
+    }
+    if (equal > closest_equal) closest = &r, closest_equal = equal;
+  }
+  if (closest == nullptr)
+    throw InputError(fmt::format("{}: sweep.refines = {}: it has no points", plan.source,
+                                 plan.settings.refines.string()));
+  const SweepPoint& first = refined.points[closest->front()];
+  throw InputError(fmt::format(
+      "{}: {} matches no ramp of {}; the closest ({}) differs: {} (a refinement's point is "
+      "configured as its ramp but for fluid.lambda)",
+      plan.source, point_name(p), plan.settings.refines.string(), first.label,
+      *config_difference(resolved_toml(first.config), p.config, "here", kLambda)));
+}
+
 }  // namespace
 
 void link_refinement(SweepPlan& plan) {
-  if (!plan.settings.continuation)
-    throw InputError(fmt::format(
-        "{}: sweep.refines needs sweep.continuation = true (its points continue a ramp)",
-        plan.source));
   const SweepPlan refined = load_refined(plan);
   const auto ramps = ramps_of(refined);
   const auto dir = plan.settings.refines;
+  // The extra points of each segment (ramp, index of the ramp's point below).
+  std::map<std::pair<const void*, std::size_t>, std::vector<std::size_t>> segments;
+  std::vector<RampStart> starts(plan.points.size());
   for (auto& p : plan.points) {
-    // The ramp whose cold start is this point's configuration at its lambda.
-    const std::vector<std::size_t>* ramp = nullptr;
-    std::vector<std::string> closest;
-    for (const auto& r : ramps) {
-      Config first = refined.points[r.front()].config;
-      first.fluid.lambda = p.config.fluid.lambda;
-      std::vector<std::string> differ;
-      differences(p.config.resolved, to_toml(first), "", differ);
-      if (differ.empty()) {
-        ramp = &r;
-        break;
-      }
-      if (closest.empty() || differ.size() < closest.size()) closest = std::move(differ);
-    }
-    if (ramp == nullptr)
-      throw InputError(fmt::format(
-          "{}: {} matches no ramp of {} (the closest differs in {}): a refinement's point is "
-          "configured as its ramp but for fluid.lambda",
-          plan.source, point_name(p), dir.string(), join(closest, ", ")));
-    RampStart start;
+    const std::vector<std::size_t>& ramp = ramp_of(plan, p, refined, ramps);
     const double lambda = p.config.fluid.lambda;
-    for (std::size_t i : *ramp) {
+    RampStart& start = starts[p.index];
+    for (std::size_t i : ramp) {
       const SweepPoint& q = refined.points[i];
       if (q.config.fluid.lambda == lambda)
         throw InputError(
@@ -118,10 +128,17 @@ void link_refinement(SweepPlan& plan) {
     if (start.ramp.empty())
       throw InputError(fmt::format(
           "{}: {}: lambda {} is below its ramp's first point (lambda {}): no state to start from",
-          plan.source, point_name(p), lambda, refined.points[ramp->front()].config.fluid.lambda));
-    start.shown = std::filesystem::proximate(start.ramp.back()).string();
-    p.refines = std::move(start);
-    continue_point(plan, p);
+          plan.source, point_name(p), lambda, refined.points[ramp.front()].config.fluid.lambda));
+    segments[{&ramp, start.ramp.size()}].push_back(p.index);
+  }
+  for (auto& [segment, points] : segments) {
+    std::sort(points.begin(), points.end(), [&](std::size_t a, std::size_t b) {
+      return plan.points[a].config.fluid.lambda < plan.points[b].config.fluid.lambda;
+    });
+    plan.points[points.front()].refines = std::move(starts[points.front()]);
+    for (std::size_t k = 1; k < points.size(); ++k)
+      plan.points[points[k]].continues_from = points[k - 1];
+    for (std::size_t i : points) continue_point(plan, plan.points[i]);
   }
 }
 

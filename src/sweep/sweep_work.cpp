@@ -53,6 +53,7 @@ std::size_t SweepWork::load_folders() {
   const auto& out = options_.out;
   // Every folder is compared before anything is written: a changed sweep is
   // refused as a whole.
+  refuse_refining_into_itself(plan_, out);
   prepare_output_folder(out);
   for (const auto& p : plan_.points) state_[p.index] = inspect_point_folder(p, out / p.folder);
   std::filesystem::create_directories(out / "points");
@@ -389,7 +390,8 @@ void SweepWork::write_table() const {
     std::lock_guard lock(mutex_);
     records = records_;
   }
-  write_file_atomically(options_.out / "flowcurves.csv", flowcurves_csv(plan_, records));
+  write_file_atomically(options_.out / "flowcurves.csv",
+                        flowcurves_csv(plan_, records, options_.out));
 }
 
 }  // namespace dilatant::sweep

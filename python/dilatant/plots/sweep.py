@@ -207,7 +207,7 @@ def chosen_curve(curves):
 def stress_colours(curve):
     cmap = matplotlib.colormaps["plasma"]
     n = len(curve.rows)
-    return {r["point"]: cmap(0.85 * k / max(n - 1, 1)) for k, r in enumerate(curve.rows)}
+    return {r["dir"]: cmap(0.85 * k / max(n - 1, 1)) for k, r in enumerate(curve.rows)}
 
 
 def fig1b(out, rows, curve, colours, swept):
@@ -220,7 +220,7 @@ def fig1b(out, rows, curve, colours, swept):
         ok = r["valid"] == "true"
         if ok:
             ax.errorbar([x], [y], yerr=[np.nan_to_num(number(r["eta_err"]))], fmt="o", ms=7,
-                        color=colours[r["point"]], capsize=2)
+                        color=colours[r["dir"]], capsize=2)
         else:
             ax.plot([x], [y], "o", ms=7, color=INVALID, mfc="none")
         ax.annotate(f"$\\tau = {stress_text(number(r['shear_stress']))}$", (x, y),
@@ -263,7 +263,7 @@ def fig1c(out, rows, curve, colours, swept):
         ok = r["valid"] == "true"
         # A distribution outside the model's validity: dotted and pale, and said so.
         ax.plot(centre, density, "-" if ok else ":", lw=1.4 if ok else 1.1,
-                color=colours[r["point"]], alpha=1.0 if ok else 0.6,
+                color=colours[r["dir"]], alpha=1.0 if ok else 0.6,
                 label=f"$\\tau = {stress_text(number(r['shear_stress']))}$ "
                 f"(stick {100 * stick:.1f}%)" + ("" if ok else ", outside validity"))
     mu0, s_c = curve.mu0, number(curve.rows[0]["s_c"])
@@ -308,7 +308,7 @@ def fig1d(out, rows, curve, colours, swept):
     ax.plot(rate, hd, "--", color="0.3", lw=0.8)
     for r, x, b, h in zip(flowing, rate, bl, hd):
         ok = r["valid"] == "true"
-        colour = colours[r["point"]] if ok else INVALID
+        colour = colours[r["dir"]] if ok else INVALID
         ax.plot([x], [b], "o", ms=6, color=colour, mfc=colour if ok else "none")
         ax.plot([x], [h], "s", ms=6, color=colour, mfc="none")
     ax.plot([], [], "o-", color="0.3", label=r"$P_{BL}$ (boundary lubricated)")

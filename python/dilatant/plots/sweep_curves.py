@@ -45,7 +45,8 @@ class Curve:
 
 def load_curves(out):
     rows = [r for r in read_rows(out / "flowcurves.csv") if r["status"] == "done"]
-    rows = refined_ramp_rows(out, rows)  # a refinement's curves with their ramps' points
+    merged = refined_ramp_rows(out, rows)  # a refinement's curves with their ramps' points
+    refinement, rows = merged is not rows, merged
     groups = {}
     for r in rows:
         if is_pressure(r):  # phi measured, not fixed: mu(J), phi(J) instead
@@ -54,7 +55,9 @@ def load_curves(out):
     curves = [Curve(phi, sample, rs) for (phi, sample), rs in groups.items()]
     curves.sort(key=lambda c: (c.mu0, c.sample, c.phi))
     analysis = out / "analysis" / "curves.csv"
-    if analysis.exists():
+    # A refinement's own analysis saw its extra points only, not the merged
+    # curves: its regimes are not theirs, and the figures go unlabelled.
+    if analysis.exists() and not refinement:
         for a in read_rows(analysis):
             for c in curves:
                 if c.sample == a["sample"] and c.phi == number(a["phi"]):

@@ -5,7 +5,6 @@ the tables of dilatant.plots read. Standard library only, so that the tables
 """
 import csv
 import math
-import tomllib
 from pathlib import Path
 
 
@@ -24,18 +23,34 @@ def number(text):
 
 def refined_ramp_rows(folder, rows):
     """A refinement's rows (sweep.refines, docs/sweeps.md "Refining a ramp") with
-    the finished points of the ramps it refines, those of its own curves (same
-    phi and sample): one curve of both tables. A ramp row's dir becomes absolute
-    (the figures read its files). Other sweeps' rows come back as they are."""
+    the finished points of the ramps it refines: one curve of both tables. Each
+    extra point joins the curve of the ramp point its segment started from
+    (followed through the `start` column), and takes that curve's phi and
+    sample, which its own table may label differently (other swept keys); a
+    ramp row's dir becomes absolute (the figures read its files). Rows of a
+    sweep that refines nothing come back as they are."""
     try:
+        import tomllib  # Python >= 3.11; before it no sweep is read as a refinement
         with open(Path(folder) / "sweep.toml", "rb") as f:
             refines = tomllib.load(f).get("sweep", {}).get("refines")
-    except (OSError, tomllib.TOMLDecodeError):
+    except (ImportError, OSError, ValueError):
         return rows
     if not refines or not (Path(refines) / "flowcurves.csv").exists():
         return rows
-    curves = {(r["phi"], r["sample"]) for r in rows}
-    ramp = [dict(r, dir=str(Path(refines) / r["dir"]))
-            for r in read_rows(Path(refines) / "flowcurves.csv")
-            if r["status"] == "done" and (r["phi"], r["sample"]) in curves]
-    return rows + ramp
+    ramp_rows = [r for r in read_rows(Path(refines) / "flowcurves.csv") if r["status"] == "done"]
+    by_dir = {(Path(refines) / r["dir"]).resolve(): r for r in ramp_rows}
+    own = {r["dir"]: r for r in rows}
+    curves, out = set(), []
+    for r in rows:
+        start = r.get("start", "")
+        for _ in range(len(own)):  # along the segment, down to the ramp's point
+            if start not in own:
+                break
+            start = own[start].get("start", "")
+        ramp_point = by_dir.get((Path(folder) / start).resolve())
+        if ramp_point is not None:
+            r = dict(r, phi=ramp_point["phi"], sample=ramp_point["sample"])
+            curves.add((r["phi"], r["sample"]))
+        out.append(r)
+    return out + [dict(r, dir=str(Path(refines) / r["dir"])) for r in ramp_rows
+                  if (r["phi"], r["sample"]) in curves]
