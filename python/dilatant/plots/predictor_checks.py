@@ -4,12 +4,16 @@
   PYTHONPATH=python python3 -m dilatant.plots.predictor_checks DILATANT OUT.csv DIR...
 
 For each flowcurves.csv under the DIRs, each curve with two lambdas or more
-(same friction law and fluid forces, mu0, nominal phi, seed, s_c) gets its mean phi_bulk,
+(same friction law and fluid forces, mu0, nominal phi, seed, s_c and `sample`, the
+table's curve label, which names every other swept key such as the cell's size)
+gets its mean phi_bulk,
 the regime `dilatant predict` gives there from the sediment table alone
 (`--bulk-table none`: the bulk table is read from some of these very curves, so
 it would check itself), and what the curve did: the lambda range run, whether a point
 jammed (and the first lambda that did), and eta at the highest lambda over eta
-at the lowest (thickening when > 1). Written to OUT.csv (via OUT.csv.part).
+at the lowest (thickening when > 1). Written to OUT.csv (via OUT.csv.part). A
+refinement's table (sweep.refines) is left out: its curves are extra points of
+another table's ramps.
 """
 import csv
 import json
@@ -34,13 +38,16 @@ def model(row, fluid):
 
 def curves(flow_file):
     with open(flow_file.parent / "sweep.toml", "rb") as f:
-        fluid = tomllib.load(f).get("fluid", {})
+        sweep = tomllib.load(f)
+    fluid = sweep.get("fluid", {})
     groups = defaultdict(list)
+    if sweep.get("sweep", {}).get("refines"):
+        return groups
     for r in csv.DictReader(open(flow_file)):
         if r["status"] != "done":
             continue
         key = (model(r, fluid), float(r["mu0"]), float(r["phi"]),
-               r.get("cell.seed") or "1", r["s_c"])
+               r.get("cell.seed") or "1", r["s_c"], r["sample"])
         groups[key].append(r)
     # A flow curve has two lambdas at least; single points are not curves.
     return {k: v for k, v in groups.items() if len({r["lambda"] for r in v}) > 1}
@@ -53,7 +60,7 @@ def main(argv):
     rows = []
     for d in argv[3:]:
         for flow in sorted(Path(d).rglob("flowcurves.csv")):
-            for (law, mu0, phi, seed, s_c), points in sorted(curves(flow).items()):
+            for (law, mu0, phi, seed, s_c, sample), points in sorted(curves(flow).items()):
                 points.sort(key=lambda r: float(r["lambda"]))
                 fractions = [float(r["phi_bulk"]) for r in points if r["phi_bulk"]]
                 phi_bulk = sum(fractions) / len(fractions)
@@ -73,6 +80,7 @@ def main(argv):
                     "lambda_min": points[0]["lambda"], "lambda_max": points[-1]["lambda"],
                     "first_jam_lambda": min(jams) if jams else "",
                     "eta_ratio": f"{ratio:.3g}" if ratio != "" else "",
+                    "sample": sample,
                 })
     part = out.with_name(out.name + ".part")
     with open(part, "w", newline="") as f:
