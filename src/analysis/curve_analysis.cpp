@@ -25,6 +25,16 @@ constexpr double kCurvatureSigmas = 2.0;
 // 1.4826 x median absolute deviation estimates sigma of a normal distribution.
 constexpr double kMadToSigma = 1.4826;
 constexpr std::size_t kMinFitPoints = 3;
+// Each point's noise is a standard error of its own (a run's mean over its
+// steady samples, or a rheometer's scatter): the normal quantile applies, which
+// the t quantile at 1000 degrees of freedom gives within 0.1%.
+constexpr double kNormalDof = 1000.0;
+// Rule 6's rate_falls turns a whole curve's regime on one step, so its false
+// calls are held far below an interval's 5%: at most 1 in 1000 curves whose
+// rate never falls (a fall beyond 3.1-4 combined sigmas for 1-30 steps). It
+// also leaves room for error bars a little too small (a run's samples are
+// correlated); the steps it is meant for are tens of sigmas deep.
+constexpr double kRateFallFalseCalls = 1e-3;
 
 double median(std::vector<double> v) {
   const auto mid = v.begin() + static_cast<long>(v.size() / 2);
@@ -138,6 +148,31 @@ void fit_exponent(const FlowCurve& curve, const LogCurve& c, std::size_t from, s
   for (std::size_t k = from; k < to; ++k) r.in_window[c.index[k]] = true;
 }
 
+// Rule 6's rate_falls: is there a fit point k at or above the onset whose rate is
+// lower than the one before it (k - 1, at a lower stress) by more than their
+// combined noise can explain? Under imposed stress the rate of an S-shaped flow
+// curve (Wyart & Cates, PRL 112, 098302 (2014), Eq. 5; Mari, Seto, Morris &
+// Denn, PRE 91, 052302 (2015), Fig. 1) falls where the stress passes the
+// branch's turning point: a ramp that steps across it lands on the frictional
+// branch at a lower rate. One such step is DST even where a power law over the
+// window still has a finite n. The m steps are tested together (Bonferroni):
+// each one-sided at kRateFallFalseCalls/m, so a curve whose rate never falls is
+// called DST by this rule with probability at most kRateFallFalseCalls, however
+// many points it has.
+bool rate_falls(const LogCurve& c, std::size_t onset) {
+  const std::size_t first = std::max<std::size_t>(onset, 1);
+  std::size_t steps = 0;
+  for (std::size_t k = first; k < c.x.size(); ++k) steps += c.x[k] > c.x[k - 1] ? 1 : 0;
+  if (steps == 0) return false;
+  const double z =
+      student_t_quantile(1.0 - kRateFallFalseCalls / static_cast<double>(steps), kNormalDof);
+  for (std::size_t k = first; k < c.x.size(); ++k) {
+    if (!(c.x[k] > c.x[k - 1])) continue;  // equal stresses: no order to read
+    if (c.y[k - 1] - c.y[k] > z * std::hypot(c.sigma[k], c.sigma[k - 1])) return true;
+  }
+  return false;
+}
+
 // d ln eta / d ln gamma_dot at each fit point, from its neighbours (header, "Local slope").
 void local_slopes(const LogCurve& c, CurveResult& r) {
   const std::size_t n = c.x.size();
@@ -198,6 +233,8 @@ std::string_view dst_evidence_name(DstEvidence e) {
       return "rate_not_increasing";
     case DstEvidence::ExponentAboveCap:
       return "n_above_cap";
+    case DstEvidence::RateFalls:
+      return "rate_falls";
     case DstEvidence::Jammed:
       return "jammed";
   }
@@ -263,14 +300,17 @@ CurveResult analyse_curve(const FlowCurve& curve, const AnalysisSettings& s) {
     r.dst_evidence = DstEvidence::Jammed;
   } else if (onset >= n) {
     r.regime = Regime::Newtonian;
-  } else if (r.window_points == 0) {
-    r.regime = Regime::Unresolved;
-  } else if (std::isinf(r.n)) {
+  } else if (r.window_points > 0 && std::isinf(r.n)) {
     r.regime = Regime::Dst;
     r.dst_evidence = DstEvidence::RateNotIncreasing;
-  } else if (r.n > s.dst_n_cap) {
+  } else if (r.window_points > 0 && r.n > s.dst_n_cap) {
     r.regime = Regime::Dst;
     r.dst_evidence = DstEvidence::ExponentAboveCap;
+  } else if (rate_falls(c, onset)) {
+    r.regime = Regime::Dst;
+    r.dst_evidence = DstEvidence::RateFalls;
+  } else if (r.window_points == 0) {
+    r.regime = Regime::Unresolved;
   } else {
     r.regime = Regime::Cst;
     // Step 7: Bagnold scaling, n = 1, within the interval.

@@ -33,8 +33,13 @@
 //       dst         some point jammed while others flow (the flow stops above a
 //                   critical stress);
 //       newtonian   no onset in the ramp;
-//       unresolved  an onset but fewer than 3 fit points above it;
 //       dst         b <= 0 (the rate does not increase with stress) or n > dst_n_cap;
+//       dst         at or above the onset, the rate falls from one point to the
+//                   next (higher stress) by more than their combined noise
+//                   explains at a false-call rate of 1e-3 per curve
+//                   (rate_falls: the ramp stepped across the turning point of
+//                   an S-shaped flow curve);
+//       unresolved  an onset but fewer than 3 fit points above it;
 //       cst         otherwise.
 //     A curve with fewer than 3 fit points in all is jammed, dst (a jam) or
 //     unresolved by the same rules.
@@ -62,14 +67,14 @@
 namespace dilatant::analysis {
 
 enum class Regime { Newtonian, Cst, Dst, Unresolved, Jammed };
-enum class DstEvidence { None, RateNotIncreasing, ExponentAboveCap, Jammed };
+enum class DstEvidence { None, RateNotIncreasing, ExponentAboveCap, RateFalls, Jammed };
 
 // Rule 7 on an interval of n.
 bool bagnold_holds(double n_low, double n_high, const AnalysisSettings& s);
 
 std::string_view regime_name(Regime r);  // newtonian | cst | dst | unresolved | jammed
 std::string_view dst_evidence_name(
-    DstEvidence e);  // "" | rate_not_increasing | n_above_cap | jammed
+    DstEvidence e);  // "" | rate_not_increasing | n_above_cap | rate_falls | jammed
 
 inline constexpr double kNotFound = std::numeric_limits<double>::quiet_NaN();
 
