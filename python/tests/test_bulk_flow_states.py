@@ -49,7 +49,11 @@ def test_ramps_are_classified_and_other_cells_left_out(tmp_path, monkeypatch, ca
         "F,0.61,0.1,0.1,done,false,true,0.61,0,0.8.0,",
         "F,0.61,0.1,1,pending,,,,,,",                       # a ramp still running
         "G,0.62,0.1,0.1,done,false,true,0.62,0,0.8.0,",
-        "G,0.62,0.1,1,failed,,,,,,"])                       # a ramp whose chain broke
+        "G,0.62,0.1,1,failed,,,,,,",                        # a ramp whose chain broke
+        "S,0.6,0.4,10,done,false,true,0.60,0,0.8.0,",
+        "S,0.6,0.4,100,done,false,true,0.60,0.3,0.8.0,"])   # its rate fell: no cst row
+    (tmp_path / "le" / "curves.csv").write_text(
+        "sample,phi,regime,dst_evidence\nD,0.55,cst,\nS,0.6,dst,rate_falls\n")
     write_sweep(tmp_path / "walls", ["E,0.58,1,1,done,false,true,0.58,0,0.8.0,"],
                 SWEEP.replace("'lees-edwards'", "'walls'"))
     write_sweep(tmp_path / "refine", ["H,0.6,1,20,done,true,true,0.60,0,0.8.0,jammed"],
@@ -66,6 +70,8 @@ def test_ramps_are_classified_and_other_cells_left_out(tmp_path, monkeypatch, ca
     assert "le/flowcurves.csv F: the ramp is not finished (1 points pending or failed)" in out.err
     assert "le/flowcurves.csv G: the ramp is not finished" in out.err
     assert "refine/flowcurves.csv: a refinement of the ramps in /runs/le" in out.err
+    assert ("le/flowcurves.csv S: its rate falls as the stress rises (curves.csv: dst by "
+            "rate_falls) without a jam") in out.err
 
 
 def test_contradicting_curves_stop_the_script(tmp_path, monkeypatch):

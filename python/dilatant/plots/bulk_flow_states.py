@@ -23,6 +23,12 @@ table decides its row.
   stress jammed too (`jam_cold_start`): `dst`. A jam without a confirming cold
   start is named on stderr and left out: it may be the ramp's history.
 
+A ramp that never jams but whose rate falls as the stress rises (the flow-curve
+analysis's `dst` by `rate_falls` in the `curves.csv` beside the table: a step
+across an S-shaped curve's turning point) is DST without a jam, which the
+table's rows (`jam_lambda`) cannot say yet: it is named on stderr and left out
+rather than counted `cst`.
+
 phi_bulk is the curve's mean (in the Lees–Edwards box it is the box's
 fraction). `max_valid_lambda` is the largest flowing lambda whose point is
 `valid` (at most 5% of contacts beyond s_lim), `max_frac_unconverged` the
@@ -117,6 +123,15 @@ def contradictions(rows):
     return out
 
 
+def analysed_rate_falls(curves_file):
+    """The samples the flow-curve analysis beside the table calls DST because
+    their rate falls between two stresses (none when there is no analysis)."""
+    if not curves_file.exists():
+        return set()
+    return {r["sample"] for r in csv.DictReader(open(curves_file))
+            if r.get("dst_evidence") == "rate_falls"}
+
+
 def rows_of(flow_file):
     with open(flow_file.parent / "sweep.toml", "rb") as f:
         sweep = tomllib.load(f)
@@ -136,12 +151,17 @@ def rows_of(flow_file):
             skipped.append(f"{flow_file} {r['sample']}: {why}")
             continue
         curves[key].append(r)
+    rate_falls = analysed_rate_falls(flow_file.parent / "curves.csv")
     out = []
     for key, points in curves.items():
         sample = key[0]
         if unfinished[key]:
             skipped.append(f"{flow_file} {sample}: the ramp is not finished ({unfinished[key]} "
                            "points pending or failed)")
+            continue
+        if sample in rate_falls and not any(r["jammed"] == "true" for r in points):
+            skipped.append(f"{flow_file} {sample}: its rate falls as the stress rises (curves.csv: "
+                           "dst by rate_falls) without a jam, which the table cannot hold yet")
             continue
         row, why = curve_row(flow_file.as_posix(), sample, points, sweep)
         if row:
