@@ -22,4 +22,17 @@ PointState inspect_point_folder(const SweepPoint& point, const std::filesystem::
   return PointState::Fresh;
 }
 
+nlohmann::json read_point_summary(const std::filesystem::path& file) {
+  return nlohmann::json::parse(read_input_file(file, "point's summary"));  // throws if corrupt
+}
+
+void refuse_refining_into_itself(const SweepPlan& plan, const std::filesystem::path& out) {
+  std::error_code ec;  // a folder that does not exist yet is not the refined one
+  if (!plan.settings.refines.empty() && std::filesystem::equivalent(out, plan.settings.refines, ec))
+    throw InputError(fmt::format(
+        "{}: --out {} is the folder this sweep refines (sweep.refines); give the refinement a "
+        "folder of its own",
+        plan.source, out.string()));
+}
+
 }  // namespace dilatant::sweep

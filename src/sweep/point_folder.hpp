@@ -14,6 +14,7 @@
 // exit code 2) rather than mixing runs of two sweeps in one table. Comments
 // are ignored in the comparison (they name the file the sweep was read from).
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "sweep/sweep_plan.hpp"
@@ -23,5 +24,13 @@ namespace dilatant::sweep {
 enum class PointState { Fresh, Resumable, Done };
 
 PointState inspect_point_folder(const SweepPoint& point, const std::filesystem::path& folder);
+
+// A finished point's summary.json (`file`); throws InputError when it cannot
+// be read and nlohmann::json::parse_error when it is corrupt.
+nlohmann::json read_point_summary(const std::filesystem::path& file);
+
+// InputError when a refinement's output folder `out` is the folder it refines:
+// its sweep.toml and table would overwrite the ramp's.
+void refuse_refining_into_itself(const SweepPlan& plan, const std::filesystem::path& out);
 
 }  // namespace dilatant::sweep

@@ -4,8 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/input_error.hpp"
-#include "io/text.hpp"
+#include "sweep/point_folder.hpp"
 
 namespace dilatant::sweep {
 
@@ -32,7 +31,7 @@ RefinedStart refined_start(const RampStart& start, bool stop_at_jam) {
     }
     nlohmann::json summary;
     try {
-      summary = nlohmann::json::parse(read_input_file(folder / "summary.json", "point's summary"));
+      summary = read_point_summary(folder / "summary.json");
     } catch (const std::exception& e) {
       return {Verdict::Fail,
               fmt::format("not run: the refined ramp's point {}: {}", folder.string(), e.what()),
@@ -48,15 +47,6 @@ RefinedStart refined_start(const RampStart& start, bool stop_at_jam) {
     }
   }
   return {Verdict::Run, "", start.ramp.back() / "checkpoint.bin"};
-}
-
-void refuse_refining_into_itself(const SweepPlan& plan, const std::filesystem::path& out) {
-  std::error_code ec;  // a folder that does not exist yet is not the refined one
-  if (!plan.settings.refines.empty() && std::filesystem::equivalent(out, plan.settings.refines, ec))
-    throw InputError(fmt::format(
-        "{}: --out {} is the folder this sweep refines (sweep.refines); give the refinement a "
-        "folder of its own",
-        plan.source, out.string()));
 }
 
 }  // namespace dilatant::sweep

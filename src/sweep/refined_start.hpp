@@ -22,8 +22,4 @@ struct RefinedStart {
 // Reads the ramp's points below the refinement's point, in order of lambda.
 RefinedStart refined_start(const RampStart& start, bool stop_at_jam);
 
-// InputError when a refinement's output folder `out` is the folder it refines:
-// its sweep.toml and table would overwrite the ramp's.
-void refuse_refining_into_itself(const SweepPlan& plan, const std::filesystem::path& out);
-
 }  // namespace dilatant::sweep

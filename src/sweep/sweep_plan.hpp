@@ -141,6 +141,12 @@ SweepPlan parse_sweep(std::string_view text, std::string source,
                       const std::filesystem::path& base_dir,
                       const std::vector<std::string>& overrides);
 
+// The plan's continuation chains (ramps), in order of their first point: each
+// the indices of its points from the one that continues from none, each next
+// the point that continues from the one before (in order of lambda). Without
+// continuation every point is a chain of its own.
+std::vector<std::vector<std::size_t>> continuation_chains(const SweepPlan& plan);
+
 // The resolved sweep as a sweep file (DIR/sweep.toml): [sweep] settings, every
 // other key at the value shared by all points, and one [[points]] table per
 // point with its swept keys. Loading it gives the same points, folders and

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "io/config_compare.hpp"
@@ -111,6 +112,19 @@ void continue_point(const SweepPlan& plan, SweepPoint& p) {
 }
 
 }  // namespace detail
+
+std::vector<std::vector<std::size_t>> continuation_chains(const SweepPlan& plan) {
+  std::vector<std::optional<std::size_t>> next(plan.points.size());
+  for (const auto& p : plan.points)
+    if (p.continues_from) next[*p.continues_from] = p.index;
+  std::vector<std::vector<std::size_t>> chains;
+  for (const auto& p : plan.points) {
+    if (p.continues_from) continue;  // in its chain
+    chains.emplace_back();
+    for (std::optional<std::size_t> i = p.index; i; i = next[*i]) chains.back().push_back(*i);
+  }
+  return chains;
+}
 
 const toml::node* find_key(const toml::table& resolved, std::string_view key) {
   return find_dotted_key(resolved, key);

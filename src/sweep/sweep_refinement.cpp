@@ -15,7 +15,6 @@
 
 #include <algorithm>
 #include <map>
-#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -29,20 +28,6 @@ namespace dilatant::sweep::detail {
 namespace {
 
 using namespace std::string_view_literals;
-
-// The refined sweep's ramps: each its points' indices in order of lambda.
-std::vector<std::vector<std::size_t>> ramps_of(const SweepPlan& refined) {
-  std::vector<std::optional<std::size_t>> next(refined.points.size());
-  for (const auto& p : refined.points)
-    if (p.continues_from) next[*p.continues_from] = p.index;
-  std::vector<std::vector<std::size_t>> ramps;
-  for (const auto& p : refined.points) {
-    if (p.continues_from) continue;
-    ramps.emplace_back();
-    for (std::optional<std::size_t> i = p.index; i; i = next[*i]) ramps.back().push_back(*i);
-  }
-  return ramps;
-}
 
 SweepPlan load_refined(const SweepPlan& plan) {
   const auto dir = plan.settings.refines;
@@ -108,7 +93,7 @@ const std::vector<std::size_t>& ramp_of(const SweepPlan& plan, const SweepPoint&
 
 void link_refinement(SweepPlan& plan) {
   const SweepPlan refined = load_refined(plan);
-  const auto ramps = ramps_of(refined);
+  const auto ramps = continuation_chains(refined);  // in order of lambda
   const auto dir = plan.settings.refines;
   // The extra points of each segment (ramp, index of the ramp's point below).
   std::map<std::pair<const void*, std::size_t>, std::vector<std::size_t>> segments;

@@ -10,7 +10,6 @@
 #include "drivers/shear_cell_run.hpp"
 #include "io/atomic_file.hpp"
 #include "io/output_folder.hpp"
-#include "io/text.hpp"
 #include "sweep/cold_start_choice.hpp"
 #include "sweep/refined_start.hpp"
 
@@ -18,10 +17,6 @@ namespace dilatant::sweep {
 namespace {
 
 constexpr const char* kColdStart = "cold-start";
-
-nlohmann::json read_summary(const std::filesystem::path& file) {
-  return nlohmann::json::parse(read_input_file(file, "point's summary"));  // throws if corrupt
-}
 
 // A message on one line.
 std::string one_line(std::string text) {
@@ -72,7 +67,7 @@ bool SweepWork::load_point(std::size_t i) {
   if (state_[i] != PointState::Done) return false;
   nlohmann::json summary;
   try {
-    summary = read_summary(folder / "summary.json");
+    summary = read_point_summary(folder / "summary.json");
   } catch (const std::exception&) {
     state_[i] = PointState::Fresh;  // an unreadable summary.json: run the point anew
     return false;
@@ -91,7 +86,7 @@ bool SweepWork::load_point(std::size_t i) {
     ColdStartChoice cold = cold_choice(i, false);
     if (!cold.unchosen && inspect_point_folder(cold_point(p, std::move(cold.config)),
                                                folder / kColdStart) == PointState::Done) {
-      auto cold_summary = read_summary(folder / kColdStart / "summary.json");
+      auto cold_summary = read_point_summary(folder / kColdStart / "summary.json");
       std::lock_guard lock(mutex_);
       records_[i].cold_start = std::move(cold_summary);
       records_[i].cold_start_choice = std::move(cold.record);
@@ -104,14 +99,10 @@ bool SweepWork::load_point(std::size_t i) {
 
 std::vector<WorkUnit> SweepWork::work_units() const {
   std::vector<WorkUnit> units;
-  std::vector<std::optional<std::size_t>> next(plan_.points.size());
-  for (const auto& p : plan_.points)
-    if (p.continues_from) next[*p.continues_from] = p.index;
-  for (const auto& p : plan_.points) {
-    if (p.continues_from) continue;  // runs in its chain
+  for (const auto& chain : continuation_chains(plan_)) {
     WorkUnit unit;
-    for (std::optional<std::size_t> i = p.index; i; i = next[*i])
-      if (state_[*i] != PointState::Done || needs_confirmation(*i)) unit.push_back(*i);
+    for (std::size_t i : chain)
+      if (state_[i] != PointState::Done || needs_confirmation(i)) unit.push_back(i);
     if (!unit.empty()) units.push_back(std::move(unit));
   }
   return units;
@@ -192,7 +183,7 @@ void SweepWork::confirm_jam(std::size_t i) {
       summary = std::move(outcome.summary);
     }
     // A run finished before (by an earlier sweep) is read from its folder.
-    if (!summary.is_object()) summary = read_summary(folder / "summary.json");
+    if (!summary.is_object()) summary = read_point_summary(folder / "summary.json");
     std::lock_guard lock(mutex_);
     records_[i].cold_start = std::move(summary);
     records_[i].cold_start_choice = std::move(choice.record);
@@ -284,7 +275,7 @@ void SweepWork::run_point(std::size_t i) {
     // had finished before this sweep (resumed with nothing left) is read back.
     finish(i, PointStatus::Done, "",
            outcome.summary.is_object() ? std::move(outcome.summary)
-                                       : read_summary(folder / "summary.json"));
+                                       : read_point_summary(folder / "summary.json"));
   } catch (const std::exception& e) {
     finish(i, PointStatus::Failed, one_line(e.what()));
     return;

@@ -51,10 +51,6 @@ snapshot_interval = 0.0
 continuation = true
 )";
 
-std::map<std::string, std::string> row(const fs::path& table, std::size_t k) {
-  return test::table_row(table, k);
-}
-
 TEST(RampToJam, StopsAtTheFirstJamAndConfirmsItFromAColdStart) {
   test::TempDir dir;
   // Two flowing points before the jam, and the cold start's phi matched to
@@ -66,8 +62,8 @@ TEST(RampToJam, StopsAtTheFirstJamAndConfirmsItFromAColdStart) {
   o.out = dir.path();
   const SweepOutcome first = run_sweep(plan, o);
   const fs::path table = dir.path() / "flowcurves.csv";
-  auto flowing = row(table, 0), before_jam = row(table, 1), jam = row(table, 2),
-       above = row(table, 3);
+  auto flowing = test::table_row(table, 0), before_jam = test::table_row(table, 1),
+       jam = test::table_row(table, 2), above = test::table_row(table, 3);
   ASSERT_EQ(flowing["status"], "done") << flowing["error"];
   ASSERT_EQ(before_jam["status"], "done") << before_jam["error"];
   EXPECT_EQ(flowing["jammed"], "false");
@@ -94,8 +90,8 @@ TEST(RampToJam, StopsAtTheFirstJamAndConfirmsItFromAColdStart) {
   const auto before = test::read_text(dir.path() / jam["dir"] / "cold-start" / "summary.json");
   const SweepOutcome again = run_sweep(plan, o);
   EXPECT_EQ(again.skipped, 3u);
-  EXPECT_EQ(row(table, 2)["jam_cold_start"], "jammed");
-  EXPECT_EQ(row(table, 3)["status"], "skipped");
+  EXPECT_EQ(test::table_row(table, 2)["jam_cold_start"], "jammed");
+  EXPECT_EQ(test::table_row(table, 3)["status"], "skipped");
   EXPECT_EQ(test::read_text(dir.path() / jam["dir"] / "cold-start" / "summary.json"), before);
 }
 
@@ -130,7 +126,7 @@ TEST(RampToJam, TheBulkRuleStartsTheColdStartWhereTheJamBegan) {
   o.out = dir.path();
   run_sweep(plan, o);
   const fs::path table = dir.path() / "flowcurves.csv";
-  auto flowing = row(table, 0), jam = row(table, 1);
+  auto flowing = test::table_row(table, 0), jam = test::table_row(table, 1);
   ASSERT_EQ(jam["status"], "done") << jam["error"];
   ASSERT_EQ(jam["jammed"], "true");
   ASSERT_NE(jam["jam_cold_start"], "pending");
@@ -160,8 +156,8 @@ TEST(RampToJam, TheBulkRuleStartsTheColdStartWhereTheJamBegan) {
   const auto cold_summary = dir.path() / jam["dir"] / "cold-start" / "summary.json";
   const auto written = fs::last_write_time(cold_summary);
   run_sweep(plan, o);
-  EXPECT_EQ(row(table, 1)["jam_phi_bulk_start"], "0.123456");
-  EXPECT_EQ(row(table, 1)["jam_cold_start"], jam["jam_cold_start"]);
+  EXPECT_EQ(test::table_row(table, 1)["jam_phi_bulk_start"], "0.123456");
+  EXPECT_EQ(test::table_row(table, 1)["jam_cold_start"], jam["jam_cold_start"]);
   EXPECT_EQ(fs::last_write_time(cold_summary), written);
 }
 
