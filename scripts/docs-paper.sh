@@ -16,8 +16,12 @@
 # (default docs/paper-reproduction), DILATANT_PAPER_SWEEPS (default
 # "fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi
 # dense-window-phi dst-map dst-map-mu0 dst-map-phi dst-map-dense dst-map-seeds
-# dst-size dst-size-phi dst-map-films sc-scaling lees-edwards-fig2 lees-edwards-dst decisive-le decisive-le-refine decisive-le-mu0 decisive-walls bulk-boundary"),
-# DILATANT_SKIP_BUILD=1 to use build/ as it is.
+# dst-size dst-size-phi dst-map-films sc-scaling lees-edwards-fig2 lees-edwards-dst decisive-le decisive-le-mu0.4 decisive-le-refine decisive-le-mu0 decisive-walls bulk-boundary"),
+# DILATANT_SKIP_BUILD=1 to use build/ as it is, DILATANT=PATH to run another
+# binary (a study pinned to the version it started with: scripts/pinned-binary.sh).
+# A sweep with a folder in runs/ (a study kept in the repository across
+# machines, scripts/study-archive.sh) is restored from it before it runs and
+# saved to it after.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 out=${DILATANT_PAPER_OUT:-out/paper}
@@ -29,16 +33,20 @@ fi
 status=0
 sweeps="fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi dense-window-phi
 dst-map dst-map-mu0 dst-map-phi dst-map-dense dst-map-seeds dst-size dst-size-phi dst-map-films sc-scaling
-lees-edwards-fig2 lees-edwards-dst decisive-le decisive-le-refine decisive-le-mu0 decisive-walls bulk-boundary"
+lees-edwards-fig2 lees-edwards-dst decisive-le decisive-le-mu0.4 decisive-le-refine decisive-le-mu0 decisive-walls
+bulk-boundary"
+binary=${DILATANT:-./build/dilatant}
 for sweep in ${DILATANT_PAPER_SWEEPS:-$sweeps}; do
   # A refinement (NAME-refine.toml, sweep.refines) refines NAME's ramps in $out.
   refines=()
   if [[ $sweep == *-refine ]]; then
     refines=(--set "sweep.refines=\"$(realpath -m "$out/${sweep%-refine}")\"")
   fi
+  if [[ -d runs/$sweep ]]; then DILATANT_PAPER_OUT=$out bash scripts/study-archive.sh restore "$sweep"; fi
   # A failed point does not stop the others (exit 1): copy what there is, go on.
-  ./build/dilatant sweep "examples/paper/$sweep.toml" --out "$out/$sweep" "${refines[@]}" "$@" ||
+  "$binary" sweep "examples/paper/$sweep.toml" --out "$out/$sweep" "${refines[@]}" "$@" ||
     status=$?
+  if [[ -d runs/$sweep ]]; then DILATANT_PAPER_OUT=$out bash scripts/study-archive.sh save "$sweep"; fi
   if [[ ! -f $out/$sweep/flowcurves.csv ]]; then continue; fi  # refused before it ran
   mkdir -p "$docs/$sweep"
   cp "$out/$sweep/flowcurves.csv" "$out/$sweep/sweep.toml" "$docs/$sweep/"

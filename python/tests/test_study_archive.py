@@ -1,0 +1,98 @@
+"""scripts/study-archive.sh: a sweep saved to runs/ and restored on a bare
+machine resumes as if out/ had never gone: finished points stay done, and a
+continued point run again from a restored state gives the same bits."""
+import shutil
+import subprocess
+
+import pytest
+
+from conftest import SOURCE_DIR, run_cli
+
+SCRIPT = SOURCE_DIR / "scripts" / "study-archive.sh"
+
+# A two-point ramp of the tiny cell: point 1 starts from point 0's checkpoint.
+RAMP = """[cell]
+size = [6.0, 5.0, 7.0]
+[fluid]
+lambda = [1.0, 3.0]
+[run]
+strain = 0.05
+transient_strain = 0.01
+snapshot_interval = 0.0
+[sweep]
+continuation = true
+continuation_strain = 0.05
+continuation_transient_strain = 0.01
+"""
+
+
+def archive(tmp_path, action, study="ramp"):
+    env = {"PATH": "/usr/bin:/bin", "DILATANT_PAPER_OUT": str(tmp_path / "out"),
+           "DILATANT_RUNS": str(tmp_path / "runs")}
+    return subprocess.run(["bash", str(SCRIPT), action, study], capture_output=True,
+                          text=True, env=env)
+
+
+@pytest.fixture
+def ramp(cli, tmp_path):
+    sweep = tmp_path / "ramp.toml"
+    sweep.write_text(RAMP)
+    out = tmp_path / "out" / "ramp"
+    run_cli(cli, "sweep", sweep, "--out", out, "--jobs", 1, "--no-plots", "--quiet")
+    points = sorted((out / "points").iterdir())
+    assert len(points) == 2
+    return sweep, out, points
+
+
+def test_restore_gives_back_what_the_sweep_needs_bit_for_bit(ramp, tmp_path):
+    _, out, points = ramp
+    saved = archive(tmp_path, "save")
+    assert saved.returncode == 0, saved.stderr
+    assert "2 point folders, 2 finished" in saved.stdout
+    kept = tmp_path / "runs" / "ramp" / "points" / points[0].name
+    assert (kept / "checkpoint.bin.gz").is_file()
+    assert not (kept / "contacts.csv").exists()  # no table reads it
+    original = {p.relative_to(out): p.read_bytes() for p in out.rglob("*") if p.is_file()}
+    shutil.rmtree(tmp_path / "out")
+    restored = archive(tmp_path, "restore")
+    assert restored.returncode == 0, restored.stderr
+    for name in ("config.toml", "summary.json", "timeseries.csv", "checkpoint.bin",
+                 "velocity_profile.csv", "sommerfeld_hist.csv"):
+        for point in points:
+            rel = point.relative_to(out) / name
+            assert (out / rel).read_bytes() == original[rel], rel
+    assert not (points[0] / "contacts.csv").exists()
+
+
+def test_a_restored_ramp_is_done_and_its_state_continues_exactly(ramp, tmp_path, cli):
+    sweep, out, points = ramp
+    series = (points[1] / "timeseries.csv").read_bytes()
+    summary = (points[0] / "summary.json").read_bytes()
+    assert archive(tmp_path, "save").returncode == 0
+    shutil.rmtree(tmp_path / "out")
+    assert archive(tmp_path, "restore").returncode == 0
+    # Point 1 goes: the sweep must run it again from point 0's restored state.
+    shutil.rmtree(points[1])
+    again = run_cli(cli, "sweep", sweep, "--out", out, "--jobs", 1, "--no-plots")
+    assert "2 done (1 of them before this run)" in again.stdout
+    assert (points[1] / "timeseries.csv").read_bytes() == series
+    # Point 0 was done: skipped, its restored summary untouched.
+    assert (points[0] / "summary.json").read_bytes() == summary
+
+
+def test_restore_never_overwrites_a_local_file(ramp, tmp_path):
+    _, _, points = ramp
+    assert archive(tmp_path, "save").returncode == 0
+    (points[0] / "summary.json").write_text("newer\n")
+    (points[1] / "checkpoint.bin").unlink()
+    assert archive(tmp_path, "restore").returncode == 0
+    assert (points[0] / "summary.json").read_text() == "newer\n"
+    assert (points[1] / "checkpoint.bin").is_file()
+
+
+def test_bad_use_is_exit_code_2(tmp_path):
+    assert archive(tmp_path, "keep").returncode == 2
+    missing = archive(tmp_path, "restore", study="nothing")
+    assert missing.returncode == 2
+    assert "runs/nothing/points: no such folder" in missing.stderr
+    assert archive(tmp_path, "save", study="nothing").returncode == 2
