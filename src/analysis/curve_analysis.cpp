@@ -160,17 +160,19 @@ void fit_exponent(const FlowCurve& curve, const LogCurve& c, std::size_t from, s
 // called DST by this rule with probability at most kRateFallFalseCalls, however
 // many points it has.
 bool rate_falls(const LogCurve& c, std::size_t onset) {
-  const std::size_t first = std::max<std::size_t>(onset, 1);
+  // One pass: the m steps and the largest fall in units of its combined noise;
+  // the threshold z depends on m, so the comparison comes after.
   std::size_t steps = 0;
-  for (std::size_t k = first; k < c.x.size(); ++k) steps += c.x[k] > c.x[k - 1] ? 1 : 0;
+  double largest = -kInfinity;
+  for (std::size_t k = std::max<std::size_t>(onset, 1); k < c.x.size(); ++k) {
+    if (!(c.x[k] > c.x[k - 1])) continue;  // equal stresses: no order to read
+    ++steps;
+    largest = std::max(largest, (c.y[k - 1] - c.y[k]) / std::hypot(c.sigma[k], c.sigma[k - 1]));
+  }
   if (steps == 0) return false;
   const double z =
       student_t_quantile(1.0 - kRateFallFalseCalls / static_cast<double>(steps), kNormalDof);
-  for (std::size_t k = first; k < c.x.size(); ++k) {
-    if (!(c.x[k] > c.x[k - 1])) continue;  // equal stresses: no order to read
-    if (c.y[k - 1] - c.y[k] > z * std::hypot(c.sigma[k], c.sigma[k - 1])) return true;
-  }
-  return false;
+  return largest > z;
 }
 
 // d ln eta / d ln gamma_dot at each fit point, from its neighbours (header, "Local slope").
@@ -253,8 +255,15 @@ CurveResult analyse_curve(const FlowCurve& curve, const AnalysisSettings& s) {
   local_slopes(c, r);
   const std::size_t n = c.x.size();
   if (n < kMinFitPoints) {
+    // Too few points for a plateau or an onset; a jam, or a rate that falls as
+    // the stress rises (rule 6 over every step: a Newtonian or thickening flow
+    // never does that), is still DST.
     r.regime = never_flows ? Regime::Jammed : jammed ? Regime::Dst : Regime::Unresolved;
     if (r.regime == Regime::Dst) r.dst_evidence = DstEvidence::Jammed;
+    if (r.regime == Regime::Unresolved && rate_falls(c, 0)) {
+      r.regime = Regime::Dst;
+      r.dst_evidence = DstEvidence::RateFalls;
+    }
     return r;
   }
 

@@ -87,6 +87,27 @@ TEST(RateFalls, AFallWithinTheNoiseIsNotDst) {
   }
 }
 
+// Two points have no onset, yet a rate that falls as the stress rises tenfold,
+// by more than the threshold of one step (z = 3.09, combined noise sqrt(2) 4%),
+// is DST; a rise, or a fall within the noise, leaves the curve unresolved.
+TEST(RateFalls, ATwoPointRampWhoseRateFallsIsDst) {
+  constexpr double kErr = 0.04, kZOneStep = 3.09;
+  const auto two_points = [&](double fall) {
+    FlowCurve c;
+    c.source = "two.csv";
+    c.points.push_back(simulated(1e4, 5.32, kErr * 5.32));
+    const double rate = 5.32 * std::exp(-fall);
+    c.points.push_back(simulated(1e5, rate, kErr * rate));
+    return analyse_curve(c, AnalysisSettings{});
+  };
+  const double threshold = kZOneStep * std::sqrt(2.0) * kErr;
+  const CurveResult falls = two_points(2.0 * threshold);
+  EXPECT_EQ(falls.regime, Regime::Dst);
+  EXPECT_EQ(falls.dst_evidence, DstEvidence::RateFalls);
+  EXPECT_EQ(two_points(0.5 * threshold).regime, Regime::Unresolved);
+  EXPECT_EQ(two_points(-1.0).regime, Regime::Unresolved);  // the rate rises e-fold
+}
+
 // False calls on noisy curves whose rate never falls, with sigma estimated from
 // the scatter as for rheometer data (49 points): the nearly flat n = 6 (the
 // rate grows 3.3% a step against 3% noise) is the hardest case. At most 1 in
