@@ -20,12 +20,50 @@ std::optional<BulkState> bulk_state_of(const std::string& text) {
   return std::nullopt;
 }
 
+// The dst_evidence column's text, the flow-curve analysis's word; empty is a
+// row that is not dst, or a table written before the column (whose dst rows
+// are jams).
+DstEvidence dst_evidence_of(const NumericCsv& csv, std::size_t r, BulkState state,
+                            const std::string& text) {
+  if (text.empty()) return state == BulkState::Dst ? DstEvidence::Jammed : DstEvidence::None;
+  if (state != BulkState::Dst)
+    csv.fail(r, fmt::format("dst_evidence \"{}\" on a {} row: only a dst row has evidence", text,
+                            bulk_state_name(state)));
+  for (const DstEvidence e : {DstEvidence::Jammed, DstEvidence::RateFalls,
+                              DstEvidence::RateNotIncreasing, DstEvidence::ExponentAboveCap})
+    if (text == dst_evidence_name(e)) return e;
+  csv.fail(r, fmt::format("dst_evidence \"{}\": must be jammed, rate_falls, rate_not_increasing "
+                          "or n_above_cap",
+                          text));
+}
+
+// A dst ramp without a jam flowed at every stress: it has no jam_lambda, and
+// where its rate fell it says (rate_falls always does).
+void check_flowing_dst_row(const NumericCsv& csv, std::size_t r, const BulkFlowState& s) {
+  if (s.fall_lambda != 0.0 && !(s.fall_lambda > 0.0 && s.fall_lambda <= s.max_lambda))
+    csv.fail(r, fmt::format("fall_lambda {}: the rate falls at a stress the ramp flowed at, "
+                            "0 < fall_lambda <= max_lambda {}",
+                            s.fall_lambda, s.max_lambda));
+  if (s.fall_lambda != 0.0 && s.state != BulkState::Dst)
+    csv.fail(r, fmt::format("fall_lambda {} on a {} row: a rate that falls is DST", s.fall_lambda,
+                            bulk_state_name(s.state)));
+  if (s.state != BulkState::Dst || s.dst_evidence == DstEvidence::Jammed) return;
+  if (!(s.max_lambda > 0.0) || s.jam_lambda != 0.0 ||
+      (s.dst_evidence == DstEvidence::RateFalls && s.fall_lambda == 0.0))
+    csv.fail(r, fmt::format("dst by {} with max_lambda {}, jam_lambda {} and fall_lambda {}: needs "
+                            "max_lambda > 0, no jam_lambda, and fall_lambda for rate_falls",
+                            dst_evidence_name(s.dst_evidence), s.max_lambda, s.jam_lambda,
+                            s.fall_lambda));
+}
+
 // The row's own consistency: a ramp that flowed says how far, one that jammed
 // says where, and a cst ramp has no jam.
 void check_bulk_row(const NumericCsv& csv, std::size_t r, const BulkFlowState& s) {
   if (!(s.mu0 >= 0.0) || !(s.phi_bulk > 0.0 && s.phi_bulk < 0.74))
     csv.fail(r, fmt::format("mu0 {}, phi_bulk {}: need mu0 >= 0 and phi_bulk in (0, 0.74)", s.mu0,
                             s.phi_bulk));
+  check_flowing_dst_row(csv, r, s);
+  if (s.state == BulkState::Dst && s.dst_evidence != DstEvidence::Jammed) return;
   const bool flowed = s.state != BulkState::Jammed, jammed = s.state != BulkState::Cst;
   if (flowed != (s.max_lambda > 0.0) || jammed != (s.jam_lambda > 0.0) || s.max_lambda < 0.0 ||
       s.jam_lambda < 0.0)
@@ -61,6 +99,13 @@ void check_bulk_order(const NumericCsv& csv, const std::vector<BulkFlowState>& r
 std::string measured_state_text(const BulkFlowState& s) {
   const std::string what =
       s.state == BulkState::Cst ? fmt::format("CST to lambda {:g}", s.max_lambda)
+      : s.state == BulkState::Dst && s.dst_evidence != DstEvidence::Jammed
+          ? fmt::format("flowed to lambda {:g} without a jam, DST by {}{}", s.max_lambda,
+                        dst_evidence_name(s.dst_evidence),
+                        s.fall_lambda > 0.0
+                            ? fmt::format(" (its rate fell at lambda {:g} as the stress rose)",
+                                          s.fall_lambda)
+                            : std::string())
       : s.state == BulkState::Dst
           ? fmt::format("flowed to lambda {:g}, jammed at {:g}", s.max_lambda, s.jam_lambda)
           : fmt::format("jammed at lambda {:g}", s.jam_lambda);
@@ -89,6 +134,7 @@ BulkFlowTable BulkFlowTable::parse(const NumericCsv& csv) {
                     c_regime = csv.column("regime", needs), c_max = csv.column("max_lambda", needs),
                     c_jam = csv.column("jam_lambda", needs), c_cell = csv.column("cell", needs),
                     c_source = csv.column("source", needs), c_sample = csv.column("sample", needs);
+  const auto c_evidence = csv.find_column("dst_evidence"), c_fall = csv.find_column("fall_lambda");
   BulkFlowTable t;
   t.name_ = csv.source();
   for (std::size_t r = 0; r < csv.rows(); ++r) {
@@ -104,6 +150,9 @@ BulkFlowTable BulkFlowTable::parse(const NumericCsv& csv) {
                     csv.text(r, c_source),
                     csv.text(r, c_sample),
                     csv.line_of(r)};
+    s.dst_evidence =
+        dst_evidence_of(csv, r, s.state, c_evidence ? csv.text(r, *c_evidence) : std::string());
+    if (c_fall) s.fall_lambda = csv.number_or(r, *c_fall, "fall_lambda", 0.0);
     check_bulk_row(csv, r, s);
     t.rows_.push_back(std::move(s));
   }

@@ -17,9 +17,15 @@
 //     `cst` for every phi <= p + kBulkPhiTolerance;
 //   * a `jammed` row (no flow at its lowest stress) decides `no_flow` for
 //     phi >= p - kBulkPhiTolerance;
-//   * a `dst` row (flowed, then jammed, confirmed from a cold start) decides
-//     `dst` only within kBulkPhiTolerance of p: above it the suspension may
-//     not flow at all, below it the jam may move to higher stress.
+//   * a `dst` row decides `dst` only within kBulkPhiTolerance of p: above it
+//     the suspension may not flow at all, below it the jam may move to higher
+//     stress. Its evidence (column dst_evidence, the flow-curve analysis's
+//     word, docs/analysis.md rule 6) is `jammed` (flowed, then jammed at
+//     jam_lambda, confirmed from a cold start) or, for a ramp that flowed at
+//     every stress, `rate_falls` (its rate fell at fall_lambda as the stress
+//     rose: a step across an S-shaped flow curve's turning point),
+//     `rate_not_increasing` or `n_above_cap`. A table without the column is
+//     read as written before these: its dst rows are jams.
 // Anything else (another mu0; phi between the densest cst row and the
 // loosest dst or jammed one, where the bulk boundary lies but is not
 // located; phi beyond a dst row) is not decided, and the caller falls back
@@ -32,6 +38,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/curve_analysis.hpp"
 #include "analysis/jamming_table.hpp"
 #include "analysis/numeric_csv.hpp"
 
@@ -54,13 +61,16 @@ struct BulkFlowState {
   std::string source;       // the flow-curve file it was read from
   std::string sample;       // the curve's label there
   std::size_t line = 0;     // line of the row in the table
+  DstEvidence dst_evidence = DstEvidence::None;  // None: not a dst row
+  double fall_lambda = 0.0;  // where the rate fell: lambda of the first point on the lower branch
 };
 
 class BulkFlowTable {
  public:
   // Columns mu0, phi_bulk, regime (cst, dst, jammed), max_lambda, jam_lambda,
-  // cell, source, sample; checked as the header comment says. Throws
-  // InputError naming the file and line.
+  // cell, source, sample, and optionally dst_evidence (empty unless dst) and
+  // fall_lambda; checked as the header comment says.
+  // Throws InputError naming the file and line.
   static BulkFlowTable parse(const NumericCsv& csv);
   static BulkFlowTable read(const std::filesystem::path& file);
   // data/jamming/bulk_flow_states.csv of this version.

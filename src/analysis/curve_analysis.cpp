@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "analysis/polynomial_fit.hpp"
 #include "analysis/student_t.hpp"
@@ -159,20 +160,27 @@ void fit_exponent(const FlowCurve& curve, const LogCurve& c, std::size_t from, s
 // each one-sided at kRateFallFalseCalls/m, so a curve whose rate never falls is
 // called DST by this rule with probability at most kRateFallFalseCalls, however
 // many points it has.
-bool rate_falls(const LogCurve& c, std::size_t onset) {
+// Returns the fit point whose rate fell the most (in units of its step's
+// combined noise) when that fall passes the threshold, else nothing.
+std::optional<std::size_t> rate_falls(const LogCurve& c, std::size_t onset) {
   // One pass: the m steps and the largest fall in units of its combined noise;
   // the threshold z depends on m, so the comparison comes after.
-  std::size_t steps = 0;
+  std::size_t steps = 0, largest_at = 0;
   double largest = -kInfinity;
   for (std::size_t k = std::max<std::size_t>(onset, 1); k < c.x.size(); ++k) {
     if (!(c.x[k] > c.x[k - 1])) continue;  // equal stresses: no order to read
     ++steps;
-    largest = std::max(largest, (c.y[k - 1] - c.y[k]) / std::hypot(c.sigma[k], c.sigma[k - 1]));
+    const double fall = (c.y[k - 1] - c.y[k]) / std::hypot(c.sigma[k], c.sigma[k - 1]);
+    if (fall > largest) {
+      largest = fall;
+      largest_at = k;
+    }
   }
-  if (steps == 0) return false;
+  if (steps == 0) return std::nullopt;
   const double z =
       student_t_quantile(1.0 - kRateFallFalseCalls / static_cast<double>(steps), kNormalDof);
-  return largest > z;
+  if (!(largest > z)) return std::nullopt;
+  return largest_at;
 }
 
 // d ln eta / d ln gamma_dot at each fit point, from its neighbours (header, "Local slope").
@@ -260,7 +268,9 @@ CurveResult analyse_curve(const FlowCurve& curve, const AnalysisSettings& s) {
     // never does that), is still DST.
     r.regime = never_flows ? Regime::Jammed : jammed ? Regime::Dst : Regime::Unresolved;
     if (r.regime == Regime::Dst) r.dst_evidence = DstEvidence::Jammed;
-    if (r.regime == Regime::Unresolved && rate_falls(c, 0)) {
+    const auto fall = rate_falls(c, 0);
+    if (fall) r.fall_stress = curve.points[c.index[*fall]].shear_stress;
+    if (fall && r.regime == Regime::Unresolved) {
       r.regime = Regime::Dst;
       r.dst_evidence = DstEvidence::RateFalls;
     }
@@ -303,7 +313,9 @@ CurveResult analyse_curve(const FlowCurve& curve, const AnalysisSettings& s) {
     fit_exponent(curve, c, automatic_window_start(c, onset, s), n, s, r);
   }
 
-  // Step 6: the regime.
+  // Step 6: the regime. Where the rate fell is reported whichever rule decides.
+  const auto fall = onset < n ? rate_falls(c, onset) : std::nullopt;
+  if (fall) r.fall_stress = curve.points[c.index[*fall]].shear_stress;
   if (jammed) {
     r.regime = Regime::Dst;
     r.dst_evidence = DstEvidence::Jammed;
@@ -315,7 +327,7 @@ CurveResult analyse_curve(const FlowCurve& curve, const AnalysisSettings& s) {
   } else if (r.window_points > 0 && r.n > s.dst_n_cap) {
     r.regime = Regime::Dst;
     r.dst_evidence = DstEvidence::ExponentAboveCap;
-  } else if (rate_falls(c, onset)) {
+  } else if (fall) {
     r.regime = Regime::Dst;
     r.dst_evidence = DstEvidence::RateFalls;
   } else if (r.window_points == 0) {

@@ -94,6 +94,11 @@ struct CurveResult {
   double noise = kNotFound;  // typical relative noise of the shear rate used
   Regime regime = Regime::Newtonian;
   DstEvidence dst_evidence = DstEvidence::None;
+  // Where the rate fell at or above the onset by more than rule 6's threshold
+  // (whichever rule decided the regime): the stress of the point whose rate
+  // fell most below the one before it, in units of their combined noise (the
+  // first stress on the lower branch); else kNotFound.
+  double fall_stress = kNotFound;
   // CST only (else empty): does the interval of n hold 1 (Bagnold scaling)?
   std::optional<bool> bagnold;
   std::vector<bool> in_window;      // per point of the curve

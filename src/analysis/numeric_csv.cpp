@@ -48,6 +48,12 @@ std::size_t NumericCsv::column(std::string_view name, std::string_view needs) co
   return static_cast<std::size_t>(it - header_.begin());
 }
 
+std::optional<std::size_t> NumericCsv::find_column(std::string_view name) const {
+  const auto it = std::find(header_.begin(), header_.end(), name);
+  if (it == header_.end()) return std::nullopt;
+  return static_cast<std::size_t>(it - header_.begin());
+}
+
 std::string NumericCsv::text(std::size_t r, std::size_t c) const {
   return c < rows_[r].size() ? rows_[r][c] : std::string();
 }

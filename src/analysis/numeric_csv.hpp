@@ -6,6 +6,7 @@
 // header is an error (io/table_rows.hpp, rule 1). Its tables define a model,
 // not measurements: every value must be read, none is dropped.
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,6 +23,8 @@ class NumericCsv {
   // Index of a required column; throws InputError naming it and `needs` (the
   // list of columns the reader requires) when it is missing.
   std::size_t column(std::string_view name, std::string_view needs) const;
+  // Index of an optional column, empty when the header has none.
+  std::optional<std::size_t> find_column(std::string_view name) const;
 
   std::size_t rows() const { return rows_.size(); }
   // Line number of row r in the source (1-based, header is line 1).

@@ -112,6 +112,10 @@ nlohmann::json prediction_json(const PredictionReport& r, const std::string& tab
                  {"state", bulk_state_name(s.state)},
                  {"max_lambda", s.max_lambda > 0.0 ? nlohmann::json(s.max_lambda) : nullptr},
                  {"jam_lambda", s.jam_lambda > 0.0 ? nlohmann::json(s.jam_lambda) : nullptr},
+                 {"dst_evidence", s.dst_evidence == DstEvidence::None
+                                      ? nlohmann::json(nullptr)
+                                      : nlohmann::json(dst_evidence_name(s.dst_evidence))},
+                 {"fall_lambda", s.fall_lambda > 0.0 ? nlohmann::json(s.fall_lambda) : nullptr},
                  {"cell", s.cell},
                  {"source", s.source},
                  {"sample", s.sample},

@@ -58,7 +58,8 @@ CLI::App* add_predict_command(CLI::App& app, PredictCommandArgs& args) {
       ->check(CLI::ExistingFile);
   p->add_option("--bulk-table", args.bulk_table,
                 "CSV of flow states measured in bulk (columns mu0, phi_bulk, regime = "
-                "cst|dst|jammed, max_lambda, jam_lambda, cell, source, sample), asked before the "
+                "cst|dst|jammed, max_lambda, jam_lambda, cell, source, sample; optional "
+                "dst_evidence = jammed|rate_falls and fall_lambda), asked before the "
                 "sediment table; 'none': the sediment table alone (default: the built-in "
                 "data/jamming/bulk_flow_states.csv)");
   auto* grid = p->add_flag("--grid", args.grid,

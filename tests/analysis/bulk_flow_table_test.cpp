@@ -14,13 +14,15 @@ namespace {
 
 constexpr const char* kHeader = "mu0,phi_bulk,regime,max_lambda,jam_lambda,cell,source,sample\n";
 
-BulkFlowTable table_of(const std::string& rows) {
-  return BulkFlowTable::parse(NumericCsv::from_text(kHeader + rows, "b.csv"));
+// The table of `rows` under `header` (default: without the evidence columns),
+// read from "b.csv".
+BulkFlowTable table_of(const std::string& rows, const std::string& header = kHeader) {
+  return BulkFlowTable::parse(NumericCsv::from_text(header + rows, "b.csv"));
 }
 
-std::string error_of(const std::string& rows) {
+std::string error_of(const std::string& rows, const std::string& header = kHeader) {
   try {
-    table_of(rows);
+    table_of(rows, header);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -88,6 +90,67 @@ TEST(BulkFlowTable, BadRowsNameTheirLine) {
                 .find("b.csv:3: mu0 1: this dst ramp at phi_bulk 0.58 contradicts the cst ramp"),
             std::string::npos);
   EXPECT_NE(error_of("").find("no rows"), std::string::npos);
+}
+
+// A ramp whose rate fell without a jam (dst_evidence rate_falls) is DST near
+// its phi like a jammed one, and says where the rate fell; a table without the
+// evidence column reads its dst rows as jams.
+constexpr const char* kEvidenceHeader =
+    "mu0,phi_bulk,regime,max_lambda,jam_lambda,cell,source,sample,dst_evidence,fall_lambda\n";
+
+BulkFlowTable evidence_table_of(const std::string& rows) { return table_of(rows, kEvidenceHeader); }
+
+std::string evidence_error_of(const std::string& rows) { return error_of(rows, kEvidenceHeader); }
+
+TEST(BulkFlowTable, ARampWhoseRateFellIsDstWithoutAJam) {
+  const auto t = evidence_table_of(
+      "0.4,0.6097,dst,10000,,25x10x27,le.csv,mu0=0.4,rate_falls,316\n"
+      "0.1,0.6097,cst,10000,,25x10x27,le.csv,mu0=0.1,,\n");
+  const auto d = decide_from_bulk(t, 0.4, 0.61);
+  ASSERT_EQ(d.regime, FlowRegime::Dst) << d.reason;
+  EXPECT_EQ(d.row.dst_evidence, DstEvidence::RateFalls);
+  EXPECT_EQ(d.row.fall_lambda, 316.0);
+  EXPECT_EQ(d.reason,
+            "mu0 0.4, phi_bulk 0.6097, 25x10x27 Lees-Edwards box: flowed to lambda 10000 without "
+            "a jam, DST by rate_falls (its rate fell at lambda 316 as the stress rose) (le.csv, "
+            "curve mu0=0.4)");
+  EXPECT_FALSE(decide_from_bulk(t, 0.4, 0.605).regime);  // below it: not located
+  EXPECT_EQ(decide_from_bulk(t, 0.1, 0.61).row.dst_evidence, DstEvidence::None);
+  // The window's power law turned over (rule 6's rate_not_increasing) after
+  // the rate fell: DST too, the fall where it was.
+  const auto turned = evidence_table_of("0.4,0.61,dst,1e6,,c,le.csv,y,rate_not_increasing,316\n");
+  EXPECT_EQ(decide_from_bulk(turned, 0.4, 0.61).regime, FlowRegime::Dst);
+  EXPECT_NE(decide_from_bulk(turned, 0.4, 0.61)
+                .reason.find("DST by rate_not_increasing (its rate "
+                             "fell at lambda 316"),
+            std::string::npos);
+  const auto old = table_of("0.4,0.60,dst,100,1000,c,s.csv,x\n");
+  EXPECT_EQ(old.rows()[0].dst_evidence, DstEvidence::Jammed);
+  EXPECT_EQ(dst_evidence_name(old.rows()[0].dst_evidence), "jammed");
+}
+
+TEST(BulkFlowTable, BadEvidenceNamesItsLine) {
+  EXPECT_NE(evidence_error_of("1,0.58,dst,100,,c,s.csv,x,falls,10\n")
+                .find("b.csv:2: dst_evidence \"falls\": must be jammed, rate_falls"),
+            std::string::npos);
+  EXPECT_NE(evidence_error_of("1,0.58,cst,100,,c,s.csv,x,rate_falls,10\n")
+                .find("b.csv:2: dst_evidence \"rate_falls\" on a cst row"),
+            std::string::npos);
+  EXPECT_NE(evidence_error_of("1,0.58,cst,100,,c,s.csv,x,,10\n")
+                .find("b.csv:2: fall_lambda 10 on a cst row"),
+            std::string::npos);
+  EXPECT_NE(evidence_error_of("1,0.58,dst,100,,c,s.csv,x,rate_falls,\n")
+                .find("b.csv:2: dst by rate_falls with max_lambda 100, jam_lambda 0 and "
+                      "fall_lambda 0: needs"),
+            std::string::npos);
+  EXPECT_NE(evidence_error_of("1,0.58,dst,100,,c,s.csv,x,rate_falls,1000\n")
+                .find("b.csv:2: fall_lambda 1000: the rate falls at a stress the ramp flowed at"),
+            std::string::npos);
+  EXPECT_NE(evidence_error_of("1,0.58,dst,100,1000,c,s.csv,x,rate_falls,10\n")
+                .find("needs max_lambda > 0, no jam_lambda"),
+            std::string::npos);
+  EXPECT_NE(evidence_error_of("1,0.58,dst,100,,c,s.csv,x,jammed,\n").find("b.csv:2: regime dst"),
+            std::string::npos);  // a jam without its lambda
 }
 
 TEST(BulkFlowTable, TheBuiltInTableDecidesMu0OneAtPhi058) {

@@ -54,8 +54,19 @@ TEST(RateFalls, ARampThatStepsOntoTheFrictionalBranchIsDst) {
   EXPECT_EQ(r.regime, Regime::Dst);
   EXPECT_EQ(r.dst_evidence, DstEvidence::RateFalls);
   EXPECT_EQ(dst_evidence_name(r.dst_evidence), "rate_falls");
+  EXPECT_EQ(r.fall_stress, 1e5);  // the point on the lower branch
+  EXPECT_TRUE(std::isnan(before.fall_stress));
   // The window's power law is still reported, finite (the rule does not need it).
   EXPECT_TRUE(std::isfinite(r.n));
+  // On the lower branch the rate grows again (the decisive study's tau 1e6:
+  // 2.1x the rate at 1e5). The window's power law then turns over (rule 6's
+  // rate_not_increasing decides first) and the fall is still found where it
+  // happened.
+  ramp.points.push_back(simulated(1e6, 2.1 * top_rate, 0.04 * 2.1 * top_rate));
+  const CurveResult on = analyse_curve(ramp, AnalysisSettings{});
+  EXPECT_EQ(on.regime, Regime::Dst);
+  EXPECT_EQ(on.dst_evidence, DstEvidence::RateNotIncreasing);
+  EXPECT_EQ(on.fall_stress, 1e5);
 }
 
 // The rule's threshold: one-sided at a false-call rate of 1e-3 shared by the m
@@ -104,6 +115,7 @@ TEST(RateFalls, ATwoPointRampWhoseRateFallsIsDst) {
   const CurveResult falls = two_points(2.0 * threshold);
   EXPECT_EQ(falls.regime, Regime::Dst);
   EXPECT_EQ(falls.dst_evidence, DstEvidence::RateFalls);
+  EXPECT_EQ(falls.fall_stress, 1e5);
   EXPECT_EQ(two_points(0.5 * threshold).regime, Regime::Unresolved);
   EXPECT_EQ(two_points(-1.0).regime, Regime::Unresolved);  // the rate rises e-fold
 }

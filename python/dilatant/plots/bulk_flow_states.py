@@ -23,11 +23,17 @@ table decides its row.
   stress jammed too (`jam_cold_start`): `dst`. A jam without a confirming cold
   start is named on stderr and left out: it may be the ramp's history.
 
-A ramp that never jams but whose rate falls as the stress rises (the flow-curve
-analysis's `dst` by `rate_falls` in the `curves.csv` beside the table: a step
-across an S-shaped curve's turning point) is DST without a jam, which the
-table's rows (`jam_lambda`) cannot say yet: it is named on stderr and left out
-rather than counted `cst`.
+* it never jammed, but the flow-curve analysis in the `curves.csv` beside the
+  table calls it `dst` (its rate fell as the stress rose, `rate_falls`: a step
+  across an S-shaped curve's turning point; or `rate_not_increasing`,
+  `n_above_cap`): `dst` with the analysis's `dst_evidence`, and `fall_lambda`,
+  the lambda of the point at the analysis's `fall_stress` (the first on the
+  lower branch) where the rate fell. A `rate_falls` ramp whose analysis is
+  older than that column is named on stderr and left out (run `dilatant
+  analyze` again), never counted `cst`.
+
+`dst_evidence` is the analysis's word on a `dst` row (`jammed` for a
+confirmed jam), empty otherwise.
 
 phi_bulk is the curve's mean (in the Lees–Edwards box it is the box's
 fraction). `max_valid_lambda` is the largest flowing lambda whose point is
@@ -42,7 +48,7 @@ from collections import defaultdict
 from pathlib import Path
 
 HEADER = ("mu0,phi_bulk,regime,max_lambda,max_valid_lambda,jam_lambda,points,cell,seed,"
-          "max_frac_unconverged,version,source,sample")
+          "max_frac_unconverged,version,source,sample,dst_evidence,fall_lambda")
 
 
 def setting(row, sweep, section, key):
@@ -77,18 +83,37 @@ def fmt(x):
     return "" if x is None else f"{x:g}"
 
 
-def curve_row(source, sample, points, sweep):
+def fall_lambda_of(points, fall_stress):
+    """The lambda of the point at the analysis's fall_stress (written with
+    fewer digits than the flow table's shear_stress: matched within 1e-6)."""
+    for r in points:
+        if abs(float(r["shear_stress"]) - fall_stress) <= 1e-6 * fall_stress:
+            return float(r["lambda"])
+    return None
+
+
+def curve_row(source, sample, points, sweep, analysed=None):
+    """One table row, or None and why not. analysed: the analysis's
+    (dst_evidence, fall_stress or None) when it calls the curve dst without a
+    jam."""
     points.sort(key=lambda r: float(r["lambda"]))
     jammed = [r for r in points if r["jammed"] == "true"]
     first_jam = float(jammed[0]["lambda"]) if jammed else None
     flowing = [r for r in points if r["jammed"] != "true"
                and (first_jam is None or float(r["lambda"]) < first_jam)]
-    if not jammed:
+    evidence, fall_lambda = "", None
+    if not jammed and analysed is not None:
+        regime, (evidence, fall_stress) = "dst", analysed
+        fall_lambda = None if fall_stress is None else fall_lambda_of(points, fall_stress)
+        if fall_stress is not None and fall_lambda is None:
+            return None, (f"{source} {sample}: no point at the analysis's fall_stress "
+                          f"{fall_stress:g} (curves.csv and the table disagree)")
+    elif not jammed:
         regime = "cst"
     elif not flowing:
         regime = "jammed"
     elif jammed[0].get("jam_cold_start") == "jammed":
-        regime = "dst"
+        regime, evidence = "dst", "jammed"
     else:
         return None, (f"{source} {sample}: jammed at lambda {first_jam:g} without a cold start "
                       "that confirms it")
@@ -100,7 +125,7 @@ def curve_row(source, sample, points, sweep):
            fmt(float(flowing[-1]["lambda"]) if flowing else None), fmt(max(valid, default=None)),
            fmt(first_jam), str(len(points)), cell_name(points[0], sweep),
            points[0].get("cell.seed") or str(sweep["cell"].get("seed", 1)), f"{unconverged:.2g}",
-           versions, source, sample]
+           versions, source, sample, evidence, fmt(fall_lambda)]
     if any("," in field for field in row):
         return None, f"{source} {sample}: a field holds a comma: {row}"
     return ",".join(row), None
@@ -123,13 +148,16 @@ def contradictions(rows):
     return out
 
 
-def analysed_rate_falls(curves_file):
-    """The samples the flow-curve analysis beside the table calls DST because
-    their rate falls between two stresses (none when there is no analysis)."""
+def analysed_dst(curves_file):
+    """The samples the flow-curve analysis beside the table calls DST by a rule
+    other than a jam, each with (dst_evidence, fall_stress or None: no fall, or
+    an analysis older than the column); none when there is no analysis."""
     if not curves_file.exists():
-        return set()
-    return {r["sample"] for r in csv.DictReader(open(curves_file))
-            if r.get("dst_evidence") == "rate_falls"}
+        return {}
+    return {r["sample"]: (r["dst_evidence"],
+                          float(r["fall_stress"]) if r.get("fall_stress") else None)
+            for r in csv.DictReader(open(curves_file))
+            if r["regime"] == "dst" and r.get("dst_evidence") not in ("", "jammed", None)}
 
 
 def rows_of(flow_file):
@@ -151,7 +179,7 @@ def rows_of(flow_file):
             skipped.append(f"{flow_file} {r['sample']}: {why}")
             continue
         curves[key].append(r)
-    rate_falls = analysed_rate_falls(flow_file.parent / "curves.csv")
+    dst_without_jam = analysed_dst(flow_file.parent / "curves.csv")
     out = []
     for key, points in curves.items():
         sample = key[0]
@@ -159,11 +187,12 @@ def rows_of(flow_file):
             skipped.append(f"{flow_file} {sample}: the ramp is not finished ({unfinished[key]} "
                            "points pending or failed)")
             continue
-        if sample in rate_falls and not any(r["jammed"] == "true" for r in points):
-            skipped.append(f"{flow_file} {sample}: its rate falls as the stress rises (curves.csv: "
-                           "dst by rate_falls) without a jam, which the table cannot hold yet")
+        analysed = dst_without_jam.get(sample)
+        if analysed == ("rate_falls", None):
+            skipped.append(f"{flow_file} {sample}: dst by rate_falls in an analysis without "
+                           "fall_stress (older than 0.12.0): run `dilatant analyze` again")
             continue
-        row, why = curve_row(flow_file.as_posix(), sample, points, sweep)
+        row, why = curve_row(flow_file.as_posix(), sample, points, sweep, analysed)
         if row:
             out.append((float(points[0]["mu0"]), row))
         else:
