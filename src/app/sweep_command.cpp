@@ -12,9 +12,11 @@
 
 #include "app/plot_command.hpp"
 #include "app/stop_request.hpp"
+#include "dilatant/version.hpp"
 #include "drivers/model_setup.hpp"
 #include "io/input_error.hpp"
 #include "sweep/mpi_session.hpp"
+#include "sweep/point_folder.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_runner.hpp"
 #if DILATANT_WITH_MPI
@@ -146,6 +148,13 @@ int execute_sweep_command(const SweepCommandArgs& args) {
       threads = std::max(threads, make_solver_settings(p.config.solver).threads);
     if (const std::string w = oversubscription_warning(options.jobs, threads); !w.empty())
       std::cerr << w << "\n";
+    // A study resumed by another binary would mix versions in one table.
+    for (const auto& [version, count] : sweep::other_versions_of_done_points(plan, out))
+      std::cerr << fmt::format(
+          "dilatant: note: {} finished point(s) in {} were run by version {}, this is {}: the "
+          "table will mix versions (to finish a study with the binary it started with: "
+          "scripts/pinned-binary.sh, docs/sweeps.md)\n",
+          count, out.string(), version, kVersion);
   }
   options.show_progress = lead && !args.quiet && (args.progress || isatty(STDERR_FILENO));
   options.report_failures = lead && !args.quiet;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "dilatant/version.hpp"
 #include "io/config_compare.hpp"
 #include "io/input_error.hpp"
 #include "io/text.hpp"
@@ -24,6 +25,23 @@ PointState inspect_point_folder(const SweepPoint& point, const std::filesystem::
 
 nlohmann::json read_point_summary(const std::filesystem::path& file) {
   return nlohmann::json::parse(read_input_file(file, "point's summary"));  // throws if corrupt
+}
+
+std::map<std::string, std::size_t> other_versions_of_done_points(const SweepPlan& plan,
+                                                                 const std::filesystem::path& out) {
+  std::map<std::string, std::size_t> versions;
+  for (const SweepPoint& point : plan.points) {
+    const auto folder = out / point.folder;
+    if (inspect_point_folder(point, folder) != PointState::Done) continue;
+    try {
+      const nlohmann::json summary = read_point_summary(folder / "summary.json");
+      const std::string version = summary.value("version", std::string("unknown"));
+      if (version != kVersion) ++versions[version];
+    } catch (const std::exception&) {
+      // Unreadable: the sweep's own reading of the summary says so.
+    }
+  }
+  return versions;
 }
 
 void refuse_refining_into_itself(const SweepPlan& plan, const std::filesystem::path& out) {

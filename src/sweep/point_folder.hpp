@@ -13,7 +13,9 @@
 // file changed under an existing output folder: that is refused (InputError,
 // exit code 2) rather than mixing runs of two sweeps in one table. Comments
 // are ignored in the comparison (they name the file the sweep was read from).
+#include <cstddef>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -28,6 +30,13 @@ PointState inspect_point_folder(const SweepPoint& point, const std::filesystem::
 // A finished point's summary.json (`file`); throws InputError when it cannot
 // be read and nlohmann::json::parse_error when it is corrupt.
 nlohmann::json read_point_summary(const std::filesystem::path& file);
+
+// The versions other than this binary's that ran the finished points of
+// `plan` in `out`, each with its count ("unknown" for a summary without one):
+// a sweep resumed by another version would mix two versions' results in one
+// table. A summary that cannot be read is left to the sweep to report.
+std::map<std::string, std::size_t> other_versions_of_done_points(const SweepPlan& plan,
+                                                                 const std::filesystem::path& out);
 
 // InputError when a refinement's output folder `out` is the folder it refines:
 // its sweep.toml and table would overwrite the ramp's.

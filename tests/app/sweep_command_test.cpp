@@ -174,6 +174,22 @@ TEST(SweepCommand, RunsTheGridThenResumesSkippingFinishedPointsAndRedoingAMissin
       << changed.err;
   EXPECT_EQ(summary_times(out), after_times);
 
+  // A point finished by another version: resuming says the table will mix
+  // versions (and still runs); --quiet keeps quiet.
+  const fs::path older = out / "points" / kPointFolders[0] / "summary.json";
+  auto summary = nlohmann::json::parse(read_text(older));
+  summary["version"] = "0.1.0";
+  dir.write(older.lexically_relative(dir.path()), summary.dump(2) + "\n");
+  const auto mixed = dir.run(command);
+  ASSERT_EQ(mixed.exit_code, 0) << mixed.err;
+  EXPECT_NE(mixed.err.find("note: 1 finished point(s) in " + out.string() +
+                           " were run by version 0.1.0, this is "),
+            std::string::npos)
+      << mixed.err;
+  std::vector<std::string> quiet = command;
+  quiet.push_back("--quiet");
+  EXPECT_EQ(dir.run(quiet).err, "");
+
   // `dilatant analyze` reads the sweep's table as it is.
   const auto analyze = dir.run({"analyze", (out / "flowcurves.csv").string(), "--out",
                                 (dir.path() / "analysis").string(), "--no-plots", "-q"});
