@@ -31,6 +31,7 @@ then reports the plots as skipped), with status 4 when no point is finished.
 Files are written to NAME.part and renamed, like every result file.
 """
 import csv
+import json
 import math
 import sys
 from pathlib import Path
@@ -73,6 +74,15 @@ def stress_text(v):
     return f"{head}10^{{{exponent}}}"
 
 
+def analysis_version(out):
+    """The version that wrote the sweep's analysis (analysis/fits.json), or None."""
+    try:
+        with open(out / "analysis" / "fits.json") as f:
+            return json.load(f).get("version")
+    except (OSError, ValueError):
+        return None
+
+
 def settings_caption(out, rows, swept):
     """One or two lines: version, cell, run and model settings of the sweep."""
     first = rows[0]
@@ -81,7 +91,13 @@ def settings_caption(out, rows, swept):
             config = tomllib.load(f)
     except (OSError, tomllib.TOMLDecodeError):
         config = None
-    parts = [f"dilatant {first['version']}"]
+    # The runs' versions (several when a sweep was resumed by another one), and
+    # the analysis's when it differs: the regimes drawn are the analysis's.
+    versions = "+".join(sorted({r["version"] for r in rows if r.get("version")}))
+    parts = [f"dilatant {versions or first['version']}"]
+    analysed = analysis_version(out)
+    if analysed and analysed != versions:
+        parts[0] += f" (regimes: analysis by {analysed})"
     if config:
         size = "x".join(f"{v:g}" for v in config["cell"]["size"])
         parts.append(f"cell {size} R, {first['mobile_spheres']} mobile spheres")
