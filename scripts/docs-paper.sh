@@ -7,8 +7,9 @@
 # s_c scaling),
 # copies their tables and figures into docs/paper-reproduction/<sweep>/
 # and writes docs/paper-reproduction/tables.md, control.png (Stribeck against
-# the coulomb control), newtonian.png and lees-edwards/comparison.png (walls
-# against Lees–Edwards) for docs/paper-reproduction.md.
+# the coulomb control), newtonian.png, lees-edwards/comparison.png (walls
+# against Lees–Edwards) and decisive-fig2.png (the decisive study's mu0 in one
+# figure) for docs/paper-reproduction.md.
 # Hours on the 2-core machine (docs/sweeps.md "The paper's figures"); resumable:
 # run it again after an interruption and finished points are skipped.
 #   scripts/docs-paper.sh [dilatant sweep options...]   e.g. --jobs 2
@@ -79,6 +80,11 @@ for sweep in ${DILATANT_PAPER_SWEEPS:-$sweeps}; do
     if [[ -f $out/$sweep/plots/$plot.png ]]; then cp "$out/$sweep/plots/$plot".{png,svg} "$docs/$sweep/"; fi
   done
 done
+if [[ -f $docs/decisive-le/flowcurves.csv ]]; then
+  # The decisive study's Fig. 2: every mu0 of its sweeps in one figure.
+  PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.decisive_fig2 "$docs" \
+    decisive-le decisive-le-mu0.4 decisive-le-mu0
+fi
 if [[ -f $docs/fig2/flowcurves.csv && -f $docs/coulomb/flowcurves.csv ]]; then
   PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.coulomb_control "$docs"
 fi

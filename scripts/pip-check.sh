@@ -18,7 +18,7 @@ venv=$(cd "$venv" && pwd)
 # installed package must not lean on the source tree (its plot scripts).
 copy=$(mktemp -d)
 trap 'rm -rf "$copy"' EXIT
-tar -C "$source_dir" --exclude='./build*' --exclude=./.git --exclude=./out -cf - . | tar -C "$copy" -xf -
+tar -C "$source_dir" --exclude='./build*' --exclude=./.git --exclude=./out --exclude=./runs -cf - . | tar -C "$copy" -xf -
 "$venv/bin/python" -m pip install --no-build-isolation --no-index "$copy"
 rm -rf "$copy"
 unset PYTHONPATH

@@ -1,0 +1,106 @@
+"""The decisive study's Fig. 2: eta vs gamma_dot of every mu0 in the paper's
+cell at phi 0.61, drawn from the tables of its several sweeps (decisive-le's
+mu0 0.1 ramps, decisive-le-mu0.4's mu0 0.4 ramps run again at a converged
+solver cap, decisive-le-mu0's other mu0) into one figure:
+
+    PYTHONPATH=python python3 -m dilatant.plots.decisive_fig2 DOCS FOLDER...
+
+reads DOCS/FOLDER/flowcurves.csv (its finished points), DOCS/FOLDER/curves.csv
+(the regimes) and DOCS/FOLDER/sweep.toml (the solver's cap) for each FOLDER
+that has them, and writes DOCS/decisive-fig2.{png,svg}. Colour is mu0, marker
+the seed; a curve (sample and phi) found in more than one folder is drawn from
+each, its label naming the folder and cap (decisive-le's first mu0 0.4 run at
+the cap of 1000 beside the converged rerun: docs/paper-reproduction.md "The
+decisive study"). The caption names every folder with its versions and cap.
+Files are written to NAME.part and renamed, like every result file.
+"""
+import sys
+import tomllib
+from pathlib import Path
+
+import matplotlib
+
+from .common import NothingToPlot, number, plt, read_rows, save
+from .sweep import VALIDITY_NOTE, bagnold_guide, caption, draw_curve, log_axes
+from .sweep_curves import Curve
+
+MARKERS = ["o", "s", "^", "D", "v", "P"]
+
+
+def folder_curves(folder):
+    """The folder's curves (its finished points by phi and sample, each with
+    its analysed regime), its cap and versions; none when it has no table."""
+    table = folder / "flowcurves.csv"
+    if not table.exists():
+        return [], None, set()
+    rows = [r for r in read_rows(table) if r["status"] == "done"]
+    with open(folder / "sweep.toml", "rb") as f:
+        sweep = tomllib.load(f)
+    cap = sweep.get("solver", {}).get("max_iterations", 1000)
+    groups = {}
+    for r in rows:
+        groups.setdefault((number(r["phi"]), r["sample"]), []).append(r)
+    curves = [Curve(phi, sample, rs) for (phi, sample), rs in groups.items()]
+    if (folder / "curves.csv").exists():
+        for a in read_rows(folder / "curves.csv"):
+            for c in curves:
+                if c.sample == a["sample"] and c.phi == number(a["phi"]):
+                    c.regime, c.n, c.bagnold = a["regime"], number(a["n"]), a.get("bagnold", "")
+    return curves, cap, {r["version"] for r in rows if r.get("version")}
+
+
+def seed_of(curve):
+    """The seed in a sample's label ("mu0=0.4 seed=2"), 1 when not swept."""
+    for word in curve.sample.split(" "):
+        if word.startswith("seed="):
+            return int(float(word[len("seed="):]))
+    return 1
+
+
+def draw(docs, folders):
+    """The figure into DOCS/decisive-fig2.*; returns the curves' labels."""
+    docs = Path(docs)
+    drawn, sources = [], []
+    for name in folders:
+        curves, cap, versions = folder_curves(docs / name)
+        if curves:
+            drawn += [(name, cap, c) for c in curves]
+            sources.append(f"{name} (cap {cap}; dilatant {'+'.join(sorted(versions))})")
+    if not drawn:
+        raise NothingToPlot(f"no finished point in {', '.join(folders)} under {docs}")
+    fig, ax = plt.subplots(figsize=(6.8, 5.0), constrained_layout=True)
+    mu0s = sorted({c.mu0 for _, _, c in drawn})
+    seeds = sorted({seed_of(c) for _, _, c in drawn})
+    cmap = matplotlib.colormaps["viridis"]
+    repeated = {(c.sample, c.phi) for _, _, c in drawn
+                if sum((d.sample, d.phi) == (c.sample, c.phi) for _, _, d in drawn) > 1}
+    labels = []
+    for name, cap, c in sorted(drawn, key=lambda item: (item[2].mu0, seed_of(item[2]), item[0])):
+        colour = cmap(0.85 * mu0s.index(c.mu0) / max(len(mu0s) - 1, 1))
+        marker = MARKERS[seeds.index(seed_of(c)) % len(MARKERS)]
+        label = c.label() + (f" [{name}, cap {cap}]" if (c.sample, c.phi) in repeated else "")
+        draw_curve(ax, c, colour, marker, label)
+        labels.append(label)
+    bagnold_guide(ax, [c for _, _, c in drawn])
+    log_axes(ax)
+    ax.legend(fontsize=6, loc="best")
+    ax.set_title("The decisive study: viscosity vs shear rate per $\\mu_0$ "
+                 "(paper Fig. 2, its cell)", fontsize=10)
+    caption(fig, "sources: " + "; ".join(sources) + "\n" + VALIDITY_NOTE +
+            "\narrow: the cell jams at the stresses above its curve's last flowing point")
+    save(fig, docs, "decisive-fig2")
+    return labels
+
+
+def main(argv):
+    if len(argv) < 3:
+        sys.exit(__doc__)
+    try:
+        draw(argv[1], argv[2:])
+    except NothingToPlot as e:
+        print(e, file=sys.stderr)
+        sys.exit(4)
+
+
+if __name__ == "__main__":
+    main(sys.argv)
