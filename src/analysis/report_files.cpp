@@ -126,9 +126,8 @@ Json collapse_json(const AnalysisReport& r) {
 std::string curves_csv(const AnalysisReport& r) {
   std::string out =
       "sample,phi,eta_newtonian,onset_stress,onset_rate,n,n_low,n_high,regime,dst_evidence,"
-      "fall_stress,bagnold,n_sigma,consistency,window_stress_low,window_stress_high,window_points,"
-      "window,"
-      "noise,points,file,step,dropped_rows\n";
+      "fall_stress,bagnold,n_sigma,consistency,window_stress_low,window_stress_high,"
+      "window_points,window,noise,points,file,step,dropped_rows\n";
   for (std::size_t i = 0; i < r.curves.size(); ++i) {
     const FlowCurve& c = r.input.curves[i];
     const CurveResult& k = r.curves[i];

@@ -6,10 +6,11 @@
 //     dst_evidence,fall_stress,bagnold,n_sigma,consistency,window_stress_low,
 //     window_stress_high,window_points,window,noise,points,file,step,dropped_rows
 //     (empty = not applicable; n, n_low, n_high may be "inf"; regime is newtonian,
-//     cst, dst, unresolved or jammed; fall_stress (where the rate fell, by rule 6's
-//     threshold) the stress of the point whose rate fell below the one before it; bagnold (CST only) true when the
-//     interval of n holds 1; window is auto or user; consistency is K of eta = K gamma_dot^n; noise
-//     the relative rate noise used)
+//     cst, dst, unresolved or jammed; fall_stress (where the rate fell, by rule
+//     6's threshold) the stress of the point whose rate fell below the one
+//     before it; bagnold (CST only) true when the interval of n holds 1; window
+//     is auto or user; consistency is K of eta = K gamma_dot^n; noise the
+//     relative rate noise used)
 //   points.csv  one row per measured point, for the plots:
 //     curve,sample,phi,shear_stress,shear_rate,viscosity,valid,jammed,in_window,
 //     local_slope

@@ -59,7 +59,8 @@ CLI::App* add_predict_command(CLI::App& app, PredictCommandArgs& args) {
   p->add_option("--bulk-table", args.bulk_table,
                 "CSV of flow states measured in bulk (columns mu0, phi_bulk, regime = "
                 "cst|dst|jammed, max_lambda, jam_lambda, cell, source, sample; optional "
-                "dst_evidence = jammed|rate_falls and fall_lambda), asked before the "
+                "dst_evidence = jammed|rate_falls|rate_not_increasing|n_above_cap and "
+                "fall_lambda), asked before the "
                 "sediment table; 'none': the sediment table alone (default: the built-in "
                 "data/jamming/bulk_flow_states.csv)");
   auto* grid = p->add_flag("--grid", args.grid,
