@@ -9,9 +9,9 @@ reads DOCS/FOLDER/flowcurves.csv (its finished points), DOCS/FOLDER/curves.csv
 (the regimes) and DOCS/FOLDER/sweep.toml (the solver's cap) for each FOLDER
 that has them, and writes DOCS/decisive-fig2.{png,svg}. Colour is mu0, marker
 the seed; a curve (sample and phi) found in more than one folder is drawn from
-each, its label naming the folder and cap (decisive-le's first mu0 0.4 run at
-the cap of 1000 beside the converged rerun: docs/paper-reproduction.md "The
-decisive study"). The caption names every folder with its versions and cap.
+each, with a marker of its folder's and a label naming the folder and cap
+(decisive-le's first mu0 0.4 run at the cap of 1000 beside the converged
+rerun: docs/paper-reproduction.md "The decisive study"). The caption names every folder with its versions and cap.
 Files are written to NAME.part and renamed, like every result file.
 """
 import sys
@@ -77,7 +77,9 @@ def draw(docs, folders):
     labels = []
     for name, cap, c in sorted(drawn, key=lambda item: (item[2].mu0, seed_of(item[2]), item[0])):
         colour = cmap(0.85 * mu0s.index(c.mu0) / max(len(mu0s) - 1, 1))
-        marker = MARKERS[seeds.index(seed_of(c)) % len(MARKERS)]
+        # A repeated curve's marker also follows its folder, so the two stay apart.
+        shift = len(seeds) * folders.index(name) if (c.sample, c.phi) in repeated else 0
+        marker = MARKERS[(seeds.index(seed_of(c)) + shift) % len(MARKERS)]
         label = c.label() + (f" [{name}, cap {cap}]" if (c.sample, c.phi) in repeated else "")
         draw_curve(ax, c, colour, marker, label)
         labels.append(label)
