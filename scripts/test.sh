@@ -112,6 +112,14 @@ stage "layers" layers_check || true
 # Each test file's code in a namespace of its own: the tests build in unity
 # batches whose make-up changes as files are added (scripts/build.sh).
 stage "test namespaces" python3 scripts/check-test-namespaces.py || true
+# The docs tell users to run scripts/NAME.sh directly: each one tracked
+# executable (a 644 script fails with "Permission denied").
+script_modes_check() {
+  local bad
+  bad=$(git ls-files -s 'scripts/*.sh' | awk '$1 != "100755" {print $4}')
+  [[ -z $bad ]] || { echo "not executable in git (git update-index --chmod=+x): $bad"; return 1; }
+}
+stage "script modes" script_modes_check || true
 # Every docs table and prose number with a source marker agrees with the
 # committed CSV/JSON it names (docs/testing.md "Docs against their data"); the
 # checker first shows on made-up pages that it reports a disagreement.
