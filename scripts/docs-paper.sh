@@ -85,6 +85,23 @@ if [[ -f $docs/decisive-le/flowcurves.csv ]]; then
   PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.decisive_fig2 "$docs" \
     decisive-le decisive-le-mu0.4 decisive-le-mu0
 fi
+# The decisive study's curves point by point (dilatant.plots.curve_pairs): do
+# two seeds agree within their error bars, does the mu0 0.4 rerun repeat the
+# first run (docs/paper-reproduction.md "Seeds and reruns, point by point").
+pairs() { PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.curve_pairs "$@"; }
+if [[ -f $docs/decisive-le/flowcurves.csv ]]; then
+  pairs "$docs/decisive-le/flowcurves.csv" "$docs/decisive-le/flowcurves.csv" --a-where mu0=0.1 \
+    --a-where cell.seed=1 --b-where mu0=0.1 --b-where cell.seed=2 \
+    --out "$docs/decisive-le/pairs-seeds-mu0.1" || status=$?
+fi
+if [[ -f $docs/decisive-le/flowcurves.csv && -f $docs/decisive-le-mu0.4/flowcurves.csv ]]; then
+  pairs "$docs/decisive-le-mu0.4/flowcurves.csv" "$docs/decisive-le-mu0.4/flowcurves.csv" \
+    --a-where cell.seed=1 --b-where cell.seed=2 --out "$docs/decisive-le-mu0.4/pairs-seeds" ||
+    status=$?
+  pairs "$docs/decisive-le/flowcurves.csv" "$docs/decisive-le-mu0.4/flowcurves.csv" --a-where mu0=0.4 \
+    --a-where cell.seed=1 --b-where cell.seed=1 --out "$docs/decisive-le-mu0.4/pairs-rerun-seed1" ||
+    status=$?
+fi
 if [[ -f $docs/fig2/flowcurves.csv && -f $docs/coulomb/flowcurves.csv ]]; then
   PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.coulomb_control "$docs"
 fi

@@ -4,6 +4,8 @@ numbers come from the C++ library):
   dilatant.plots.sweep.draw(DIR)          a sweep's flow curves, Figs. 1b-d and 2
   dilatant.plots.analysis.draw(DIR)       `analyze`: flow curves, n(phi), collapse
   dilatant.plots.phase_diagram.draw(DIR)  `predict --grid`: the regime over (mu0, phi)
+  dilatant.plots.wyart_cates              `analyze --model wyart-cates`: the fit drawn
+  (pressure_sweep and sweep_curves are the sweep figure's parts, imported by sweep)
 
 Each of these is also a script the CLI runs as `python3 FILE DIR`.
 
@@ -24,6 +26,11 @@ its docstring gives the arguments) or called from Python:
   bulk_flow_states      the Lees–Edwards ramps' flow states (data/jamming/bulk_flow_states.csv)
   predictor_checks      `dilatant predict` against every flow curve
   analysis_truth_table  docs/analysis.md: recovered against true values
+  decisive_fig2         the decisive study's Fig. 2: every mu0 of its sweeps in one figure
+  ramp_table            a ramp sweep's finished points as the decisive study's table
+  contact_states        the share of sticking contacts, point by point
+  curve_pairs           two flow curves point by point: z of each pair, chi^2 over them
+                        (do two seeds agree, does a rerun repeat a run)
 
 common holds what the figures share (labels, the Agg backend from a command
 line, files written to NAME.part and renamed), table_rows the reading of result
