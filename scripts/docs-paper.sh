@@ -17,9 +17,10 @@
 # (default docs/paper-reproduction), DILATANT_PAPER_SWEEPS (default
 # "fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi
 # dense-window-phi dst-map dst-map-mu0 dst-map-phi dst-map-dense dst-map-seeds
-# dst-size dst-size-phi dst-map-films sc-scaling lees-edwards-fig2 lees-edwards-dst decisive-le decisive-le-mu0.4 decisive-le-refine decisive-le-mu0 decisive-walls bulk-boundary"),
+# dst-size dst-size-phi dst-map-films sc-scaling lees-edwards-fig2 lees-edwards-dst decisive-le decisive-le-mu0.4 decisive-le-mu0.4-refine decisive-le-refine decisive-le-mu0 decisive-walls bulk-boundary"),
 # DILATANT_SKIP_BUILD=1 to use build/ as it is, DILATANT=PATH to run another
-# binary (a study pinned to the version it started with: scripts/pinned-binary.sh).
+# binary (a study pinned to the version it started with: scripts/pinned-binary.sh),
+# DILATANT_REFINE=PATH the binary of the *-refine sweeps (default build/dilatant).
 # A sweep with a folder in runs/ (a study kept in the repository across
 # machines, scripts/study-archive.sh) is restored from it before it runs and
 # saved to it after.
@@ -34,13 +35,16 @@ fi
 status=0
 sweeps="fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi dense-window-phi
 dst-map dst-map-mu0 dst-map-phi dst-map-dense dst-map-seeds dst-size dst-size-phi dst-map-films sc-scaling
-lees-edwards-fig2 lees-edwards-dst decisive-le decisive-le-mu0.4 decisive-le-refine decisive-le-mu0 decisive-walls
-bulk-boundary"
-binary=${DILATANT:-./build/dilatant}
+lees-edwards-fig2 lees-edwards-dst decisive-le decisive-le-mu0.4 decisive-le-mu0.4-refine decisive-le-refine decisive-le-mu0
+decisive-walls bulk-boundary"
 for sweep in ${DILATANT_PAPER_SWEEPS:-$sweeps}; do
-  # A refinement (NAME-refine.toml, sweep.refines) refines NAME's ramps in $out.
+  binary=${DILATANT:-./build/dilatant}
+  # A refinement (NAME-refine.toml, sweep.refines) refines NAME's ramps in $out,
+  # with DILATANT_REFINE (default build/dilatant: sweep.refines came in 0.10,
+  # after the binary a study may be pinned to).
   refines=()
   if [[ $sweep == *-refine ]]; then
+    binary=${DILATANT_REFINE:-./build/dilatant}
     refines=(--set "sweep.refines=\"$(realpath -m "$out/${sweep%-refine}")\"")
   fi
   if [[ -d runs/$sweep ]]; then DILATANT_PAPER_OUT=$out bash scripts/study-archive.sh restore "$sweep"; fi
