@@ -61,6 +61,18 @@ restore_folder() {
   done
 }
 
+# Applies save_folder or restore_folder ($1) to every point folder of $2 and
+# its jam's cold start, writing into the same names under $3.
+each_point() {
+  local copy=$1 from=$2 to=$3 point name
+  for point in "$from"/points/*/; do
+    point=${point%/}
+    name=$(basename "$point")
+    "$copy" "$point" "$to/points/$name"
+    if [[ -d $point/cold-start ]]; then "$copy" "$point/cold-start" "$to/points/$name/cold-start"; fi
+  done
+}
+
 case $action in
   save)
     [[ -d $out/points ]] || {
@@ -70,12 +82,7 @@ case $action in
     rm -rf "$archive.part"
     mkdir -p "$archive.part/points"
     cp "$out/sweep.toml" "$archive.part/" 2>/dev/null || true
-    for point in "$out"/points/*/; do
-      point=${point%/}
-      name=$(basename "$point")
-      save_folder "$point" "$archive.part/points/$name"
-      if [[ -d $point/cold-start ]]; then save_folder "$point/cold-start" "$archive.part/points/$name/cold-start"; fi
-    done
+    each_point save_folder "$out" "$archive.part"
     rm -rf "$archive"
     mv "$archive.part" "$archive"
     done=$(find "$archive/points" -mindepth 2 -maxdepth 2 -name summary.json | wc -l)
@@ -87,12 +94,7 @@ case $action in
       echo "study-archive: $archive/points: no such folder (nothing saved)" >&2
       exit 2
     }
-    for point in "$archive"/points/*/; do
-      point=${point%/}
-      name=$(basename "$point")
-      restore_folder "$point" "$out/points/$name"
-      if [[ -d $point/cold-start ]]; then restore_folder "$point/cold-start" "$out/points/$name/cold-start"; fi
-    done
+    each_point restore_folder "$archive" "$out"
     echo "study-archive: restored $archive into $out"
     ;;
   *) usage ;;
