@@ -129,3 +129,26 @@ def test_an_interrupted_point_saved_and_restored_resumes_to_the_same_bits(cli, t
         for name in ("timeseries.csv", "checkpoint.bin"):
             assert (out / "points" / point.name / name).read_bytes() == \
                 (point / name).read_bytes(), f"{point.name}/{name}"
+
+
+def test_a_jams_cold_start_is_kept_with_its_point(tmp_path):
+    """A jammed point's cold start (points/NNN/cold-start/, sweep.confirm_jams)
+    is saved and restored with its point: the table's jam_cold_start reads it."""
+    point = tmp_path / "out" / "jams" / "points" / "003-lambda=1000"
+    cold = point / "cold-start"
+    cold.mkdir(parents=True)
+    files = {point / "summary.json": b'{"jammed": true}\n', point / "checkpoint.bin": bytes(range(256)),
+             cold / "summary.json": b'{"jammed": false}\n', cold / "config.toml": b"[cell]\n",
+             cold / "checkpoint.bin": bytes(range(255, -1, -1)), cold / "contacts.csv": b"i,j\n"}
+    for path, data in files.items():
+        path.write_bytes(data)
+    saved = archive(tmp_path, "save", study="jams")
+    assert saved.returncode == 0, saved.stderr
+    assert (tmp_path / "runs/jams/points/003-lambda=1000/cold-start/checkpoint.bin.gz").is_file()
+    shutil.rmtree(tmp_path / "out")
+    assert archive(tmp_path, "restore", study="jams").returncode == 0
+    for path, data in files.items():
+        if path.name == "contacts.csv":
+            assert not path.exists()
+        else:
+            assert path.read_bytes() == data, path
