@@ -148,7 +148,10 @@ int execute_sweep_command(const SweepCommandArgs& args) {
       threads = std::max(threads, make_solver_settings(p.config.solver).threads);
     if (const std::string w = oversubscription_warning(options.jobs, threads); !w.empty())
       std::cerr << w << "\n";
-    // A study resumed by another binary would mix versions in one table.
+  }
+  // A study resumed by another binary would mix versions in one table (said
+  // once: by the only process, or by rank 0 of an MPI job).
+  if (lead && !args.quiet) {
     for (const auto& [version, count] : sweep::other_versions_of_done_points(plan, out))
       std::cerr << fmt::format(
           "dilatant: note: {} finished point(s) in {} were run by version {}, this is {}: the "

@@ -1,6 +1,7 @@
 // Sweeps on MPI ranks (issue 18, sweep/mpi_scheduler.hpp): `mpirun -n 2` on
 // tiny sweeps gives the table of the local sweep (same seeds, same numbers),
-// with a failing point recorded as locally; killed mid-way and run again it
+// with a failing point recorded as locally (and a resumed table that mixes
+// versions noted once); killed mid-way and run again it
 // completes to the same table; continuation chains, with a ramp that jams,
 // give the local ramps. mpirun runs on this machine only (shared memory and
 // loopback), oversubscribed, and as root where CI runs as root.
@@ -8,6 +9,8 @@
 #include <signal.h>
 
 #include <chrono>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <thread>
 
 #include "sweep/child_sweep.hpp"
@@ -78,6 +81,24 @@ TEST(MpiSweep, TwoRanksGiveTheTableOfTheLocalSweepAndRecordAFailingPoint) {
   // local sweep.
   ASSERT_EQ(wait_for(start_sweep(1, file, dir.path() / "mpi", {"-q"})), 1);
   EXPECT_EQ(table_without_timing(dir.path() / "mpi" / "flowcurves.csv"), local);
+  // A point finished by another version: rank 0, and only rank 0, says the
+  // table will mix versions (as the local sweep does).
+  fs::path older;
+  for (const auto& point : fs::directory_iterator(dir.path() / "mpi" / "points"))
+    if (point.path().filename().string().rfind("000-", 0) == 0)
+      older = point.path() / "summary.json";
+  ASSERT_TRUE(fs::is_regular_file(older)) << older;
+  auto summary = nlohmann::json::parse(test::read_text(older));
+  summary["version"] = "0.1.0";
+  std::ofstream(older) << summary.dump(2) << "\n";
+  const std::string again = (dir.path() / "mpi-again.err").string();
+  ASSERT_EQ(wait_for(start_sweep(2, file, dir.path() / "mpi", {}, again)), 1);
+  const std::string notes = test::read_text(again);
+  const std::string note = "note: 1 finished point(s) in " + (dir.path() / "mpi").string() +
+                           " were run by version 0.1.0";
+  const auto first = notes.find(note);
+  EXPECT_NE(first, std::string::npos) << notes;
+  EXPECT_EQ(notes.find(note, first + 1), std::string::npos) << notes;
 }
 
 TEST(MpiSweep, KilledMidwayAndRunAgainCompletesToTheLocalTable) {
