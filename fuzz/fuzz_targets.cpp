@@ -7,7 +7,11 @@
 #include <stdexcept>
 #include <string>
 
+#include "analysis/bulk_flow_table.hpp"
+#include "analysis/jamming_table.hpp"
+#include "analysis/prediction_report.hpp"
 #include "analysis/rheometer_file.hpp"
+#include "analysis/wyart_cates_prediction.hpp"
 #include "drivers/shear_cell_state.hpp"
 #include "io/config.hpp"
 #include "io/input_error.hpp"
@@ -90,11 +94,51 @@ void rheometer_file(const std::uint8_t* data, std::size_t size) {
   }
 }
 
+namespace {
+
+// Where predict is asked: no friction, the paper's boundary, beyond the last
+// measured mu0; a dilute, a dense and a near-random-close-packed fraction.
+constexpr double kMu0s[] = {0.0, 0.35, 10.0};
+constexpr double kPhis[] = {0.3, 0.58, 0.64};
+
+}  // namespace
+
+void predict_tables(const std::uint8_t* data, std::size_t size) {
+  const InputFile file(data, size, "predict-table");
+  try {
+    const auto table = analysis::JammingTable::read(file.path);
+    for (double mu0 : kMu0s)
+      for (double phi : kPhis) (void)analysis::predict(table, nullptr, mu0, phi, 5e-5);
+  } catch (const InputError&) {
+  }
+  try {
+    const auto bulk = analysis::BulkFlowTable::read(file.path);
+    const auto sediment = analysis::JammingTable::builtin();
+    for (double mu0 : kMu0s)
+      for (double phi : kPhis) {
+        const auto report = analysis::predict(sediment, &bulk, mu0, phi, 5e-5);
+        (void)analysis::source_detail(report, bulk.name());
+      }
+  } catch (const InputError&) {
+  }
+  try {
+    for (const auto& sample : analysis::fitted_wyart_cates_samples(file.path)) {
+      const auto fit = analysis::read_fitted_wyart_cates(file.path, sample);
+      for (double phi : kPhis) {
+        (void)analysis::wyart_cates_prediction(fit, phi, std::nullopt);
+        (void)analysis::wyart_cates_prediction(fit, phi, 1.0);
+      }
+    }
+  } catch (const InputError&) {
+  }
+}
+
 Target target_named(std::string_view name) {
   if (name == "config") return &config;
   if (name == "particles_csv") return &particles_csv;
   if (name == "checkpoint") return &checkpoint;
   if (name == "rheometer_file") return &rheometer_file;
+  if (name == "predict_tables") return &predict_tables;
   return nullptr;
 }
 

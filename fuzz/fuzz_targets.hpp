@@ -29,8 +29,15 @@ void checkpoint(const std::uint8_t* data, std::size_t size);
 // Refusal: InputError.
 void rheometer_file(const std::uint8_t* data, std::size_t size);
 
+// The tables `dilatant predict` reads from a user's files: the sediment's
+// phi_max_BL table (--table), the bulk flow states (--bulk-table) and a
+// Wyart–Cates fit (--model, every sample in it): the same bytes to each, and
+// whatever is accepted is asked for an answer at a few (mu0, phi) and stresses.
+// Refusal: InputError.
+void predict_tables(const std::uint8_t* data, std::size_t size);
+
 // By name, for the replay test: "config", "particles_csv", "checkpoint",
-// "rheometer_file"; null for another name.
+// "rheometer_file", "predict_tables"; null for another name.
 using Target = void (*)(const std::uint8_t*, std::size_t);
 Target target_named(std::string_view name);
 

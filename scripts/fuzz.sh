@@ -4,7 +4,7 @@
 # ASan + UBSan tests), and runs each for SECONDS (default 60) on a core of its
 # own, as many at once as there are cores.
 #   scripts/fuzz.sh [SECONDS] [TARGET ...]   targets: config particles_csv checkpoint
-#                                            rheometer_file (default: all four)
+#                                            rheometer_file predict_tables (default: all five)
 # Each starts from its committed seeds (fuzz/corpus/TARGET/) copied into
 # build-sanitize/fuzz/corpus/TARGET/, where the inputs that reach new code accumulate
 # across runs. A crash, sanitizer report, leak, timeout (10 s an input) or memory
@@ -18,7 +18,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 seconds=${1:-60}
 shift $(($# > 0))
 targets=("$@")
-if ((${#targets[@]} == 0)); then targets=(config particles_csv checkpoint rheometer_file); fi
+if ((${#targets[@]} == 0)); then targets=(config particles_csv checkpoint rheometer_file predict_tables); fi
 
 bash scripts/install-deps.sh
 dir=build-sanitize

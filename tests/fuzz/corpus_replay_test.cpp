@@ -42,8 +42,9 @@ std::vector<std::pair<std::string, fs::path>> committed_inputs() {
 
 TEST(FuzzCorpus, EveryCommittedInputIsAcceptedOrRefusedCleanly) {
   const auto inputs = committed_inputs();
-  // The four readers have seeds (a missing folder would test nothing).
-  for (const char* reader : {"config", "particles_csv", "checkpoint", "rheometer_file"}) {
+  // The five readers have seeds (a missing folder would test nothing).
+  for (const char* reader :
+       {"config", "particles_csv", "checkpoint", "rheometer_file", "predict_tables"}) {
     EXPECT_TRUE(std::any_of(inputs.begin(), inputs.end(),
                             [&](const auto& input) { return input.first == reader; }))
         << "no committed input for " << reader;
