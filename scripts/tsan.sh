@@ -27,9 +27,12 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 # (release-only, below) the halves are split again from the CI run of
 # 472694d: RampToJam 74 s + SweepRunner 39 + small ones, against SweepCommand
 # 55 + LeesEdwardsCell 22 + ShearCellRun 7 + ShearCellFluid's short test.
+# RampRefinement (a refinement's segments on two workers, waiting for and
+# reading a ramp's folders) joined the second half later (2026-11-28).
 half_a=(RampToJam SweepRunner Checkpoint ShearCellObject ContactResidual UnconvergedRun
   NumericalFault)
-half_b=(SweepCommand LeesEdwardsCell ShearCellRun ShearCellFluid ContactDetector Stopping)
+half_b=(SweepCommand LeesEdwardsCell ShearCellRun ShearCellFluid ContactDetector Stopping
+  RampRefinement)
 suites=("${half_a[@]}" "${half_b[@]}")
 if [[ ${1:-} == --print-suites ]]; then
   printf '%s\n' "${suites[@]}"
