@@ -146,3 +146,14 @@ def test_bad_use_is_exit_2_with_one_line_and_no_file(tmp_path, capsys, args, say
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and says in err, err
     assert not (tmp_path / "o.csv").exists() and not (tmp_path / "o.json").exists()
+
+
+def test_from_python_the_same_numbers_without_files(tmp_path):
+    flow = table(tmp_path / "flowcurves.csv", [
+        "1,0.4,1,done,true,true,90,4", "2,0.4,1,done,true,true,81,3"])
+    rows, result = curve_pairs.compare(flow, flow, ["cell.seed=1"], ["cell.seed=2"], blocks=0)
+    assert [r["key"] for r in rows] == [1.0] and rows[0]["z"] == pytest.approx(-9 / 5)
+    assert result["chi2"] == pytest.approx(81 / 25) and result["counted"] == 1
+    assert list(tmp_path.iterdir()) == [tmp_path / "flowcurves.csv"]
+    with pytest.raises(ValueError, match="no finished row matches --a-where cell.seed=3"):
+        curve_pairs.compare(flow, flow, ["cell.seed=3"])

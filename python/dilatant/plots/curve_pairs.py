@@ -39,7 +39,9 @@ The pairs of independent runs are independent (chi^2 with `counted` degrees of
 freedom); points of one ramp share its history, which this does not model.
 
 Bad use (a file or column missing, a filter that matches nothing, a key twice
-on one side, no key in common) exits 2 with one line. Standard library only.
+on one side, no key in common) exits 2 with one line. From Python,
+`compare(a, b, a_where=["cell.seed=1"], ...)` returns the pairs and the
+summary without writing files. Standard library only.
 """
 import argparse
 import json
@@ -220,6 +222,21 @@ def cell(value):
     return str(value)
 
 
+def compare(a, b, a_where=(), b_where=(), key="lambda", quantity="eta", blocks=10):
+    """From Python: the pairs (a list of dicts, the CSV's columns, `key` under
+    "key") and the summary (the JSON's numbers) of two flowcurves.csv files,
+    filtered by COLUMN=VALUE strings. Raises BadInput (a ValueError) with the
+    line the command line prints."""
+    if blocks < 0 or blocks == 1:
+        raise BadInput(f"--blocks {blocks}: an error bar needs at least 2 blocks (0: exact)")
+    a_rows = side(a, parse_where(a_where, "--a-where"), key, quantity, "a")
+    b_rows = side(b, parse_where(b_where, "--b-where"), key, quantity, "b")
+    rows = pairs(a_rows, b_rows, quantity, blocks)
+    if not rows:
+        raise BadInput(f"{a} and {b}: no {key} in common among the chosen rows")
+    return rows, summary(rows)
+
+
 def main(argv):
     parser = argparse.ArgumentParser(prog="python3 -m dilatant.plots.curve_pairs",
                                      description="Two flow curves point by point.")
@@ -234,13 +251,8 @@ def main(argv):
                         help="block means behind each error bar (0: error bars exact)")
     args = parser.parse_args(argv)  # argparse's own errors exit 2 too
     try:
-        if args.blocks < 0 or args.blocks == 1:
-            raise BadInput(f"--blocks {args.blocks}: an error bar needs at least 2 blocks (0: exact)")
-        a_rows = side(args.a, parse_where(args.a_where, "--a-where"), args.key, args.quantity, "a")
-        b_rows = side(args.b, parse_where(args.b_where, "--b-where"), args.key, args.quantity, "b")
-        rows = pairs(a_rows, b_rows, args.quantity, args.blocks)
-        if not rows:
-            raise BadInput(f"{args.a} and {args.b}: no {args.key} in common among the chosen rows")
+        rows, result = compare(args.a, args.b, args.a_where, args.b_where, args.key,
+                               args.quantity, args.blocks)
     except BadInput as e:
         print(f"curve_pairs: {e}", file=sys.stderr)
         return 2
@@ -249,7 +261,6 @@ def main(argv):
     lines = [",".join([args.key] + fields[1:])]
     lines += [",".join(cell(r[f]) for f in fields) for r in rows]
     write_atomic(Path(args.out + ".csv"), "\n".join(lines) + "\n")
-    result = summary(rows)
     result.update({"a": args.a, "a_where": args.a_where, "b": args.b, "b_where": args.b_where,
                    "key": args.key, "quantity": args.quantity, "blocks": args.blocks})
     write_atomic(Path(args.out + ".json"), json.dumps(result, indent=2) + "\n")
