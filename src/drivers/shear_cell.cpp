@@ -68,8 +68,10 @@ ShearCell::ShearCell(Config config, ShearCellState state)
                            .transient_strain = config_.run.transient_strain};
 }
 
-ShearCell ShearCell::resumed(Config config, const std::filesystem::path& checkpoint) {
+ShearCell ShearCell::resumed(Config config, const std::filesystem::path& checkpoint,
+                             bool transient_moved) {
   ShearCellState state = load_checkpoint(checkpoint);
+  if (transient_moved) state.measurements.restart_steady_averages();
   return ShearCell(std::move(config), std::move(state));
 }
 

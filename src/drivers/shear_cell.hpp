@@ -33,7 +33,11 @@ class ShearCell {
   // A new cell: rough walls and a packing at cell.phi, reproducibly from cell.seed.
   explicit ShearCell(Config config);
   // Exactly where an interrupted run of this config stopped (its checkpoint).
-  static ShearCell resumed(Config config, const std::filesystem::path& checkpoint);
+  // With `transient_moved` (the run is resumed with a run.transient_strain
+  // beyond every strain it had reached), the velocity profile and Sommerfeld
+  // histogram, which average past the transient, start anew.
+  static ShearCell resumed(Config config, const std::filesystem::path& checkpoint,
+                           bool transient_moved = false);
   // Continuation along a flow curve (a rheometer's ramp): the final state of
   // another run of the same cell (particles, walls, velocities, contact
   // impulses); strain, time and every measurement start at zero, and the

@@ -66,26 +66,42 @@ ShearCell continued(const Config& config, const std::filesystem::path& start_fro
 // run.strain alone may differ: a larger one extends the run (a finished one
 // too: its checkpoint holds the state before the last row was closed), with
 // the bits of a run made that long from the start; a smaller one is refused.
+// run.transient_strain may move too, but only to or beyond the run's
+// run.strain there: the averages past the transient then start anew (a fresh
+// window after everything the run had reached: how a sweep runs on a point
+// that is not steady, sweep/unsteady_extension.hpp); a transient moved into
+// the strain already run would leave the profile averaged over another window
+// than the rows.
 ShearCell resumed(const Config& config, const std::filesystem::path& out) {
   const auto written = out / "config.toml";
-  static constexpr std::string_view kExtensible[] = {"run.strain"};
+  static constexpr std::string_view kExtensible[] = {"run.strain", "run.transient_strain"};
+  bool transient_moved = false;
   if (std::filesystem::is_regular_file(written)) {
     const std::string text = read_input_file(written, "run's configuration");
     if (const auto difference = config_difference(text, config, "here", kExtensible))
-      throw InputError(
-          fmt::format("{}: the run there has another configuration ({}): resume it with the same "
-                      "configuration and --set options (only run.strain may grow), or choose "
-                      "another --out",
-                      written.string(), *difference));
-    const double before = toml::parse(text)["run"]["strain"].value_or(0.0);
+      throw InputError(fmt::format(
+          "{}: the run there has another configuration ({}): resume it with the same "
+          "configuration and --set options (only run.strain may grow, and run.transient_strain "
+          "move beyond it), or choose another --out",
+          written.string(), *difference));
+    const toml::table there = toml::parse(text);
+    const double before = there["run"]["strain"].value_or(0.0);
     if (config.run.strain < before)
       throw InputError(fmt::format(
           "{}: run.strain = {} is below the run's there ({}): --resume extends a run, it cannot "
           "shorten one",
           written.string(), config.run.strain, before));
+    const double transient_before = there["run"]["transient_strain"].value_or(0.0);
+    transient_moved = config.run.transient_strain != transient_before;
+    if (transient_moved && config.run.transient_strain < before)
+      throw InputError(fmt::format(
+          "{}: run.transient_strain = {} differs from the run's there ({}) and lies within the "
+          "strain it ran ({}): on --resume the transient may only move to {} or beyond, where "
+          "the averages start anew",
+          written.string(), config.run.transient_strain, transient_before, before, before));
   }
   try {
-    return ShearCell::resumed(config, out / "checkpoint.bin");
+    return ShearCell::resumed(config, out / "checkpoint.bin", transient_moved);
   } catch (const InputError&) {
     throw;
   } catch (const std::runtime_error& e) {

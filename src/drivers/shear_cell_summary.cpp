@@ -237,6 +237,7 @@ nlohmann::json cell_summary(const Config& config, const CellUnits& u, const Shea
   // power equals the dissipation in impacts and friction plus d(KE)/dt.
   records.energy.write(j);
   j["strain"] = s.strain;
+  j["transient_strain"] = from;  // the averages are over the strain past it
   j["time"] = s.world.time;
   j["steps"] = s.steps;
   j["steady_samples"] = v.samples;

@@ -114,4 +114,10 @@ CellRecords CellMeasurements::records(double from, const ShearGeometry& geometry
           .solver = SolverRecord::of(rows)};
 }
 
+void CellMeasurements::restart_steady_averages() {
+  std::fill(profile.sums().begin(), profile.sums().end(), 0.0);
+  std::fill(profile.weights().begin(), profile.weights().end(), 0.0);
+  histogram = SommerfeldHistogram{};
+}
+
 }  // namespace dilatant

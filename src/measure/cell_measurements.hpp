@@ -85,6 +85,11 @@ class CellMeasurements {
   CellRecords records(double from, const ShearGeometry& geometry, const CellUnits& units,
                       bool walls) const;
 
+  // Empties the averages kept past the transient only (profile, histogram):
+  // a run resumed with a transient moved beyond the strain it had reached
+  // averages them from there, like the rows it averages past `from`.
+  void restart_steady_averages();
+
   IntervalSums interval;
   std::vector<FlowRow> rows;
   VelocityProfile profile;

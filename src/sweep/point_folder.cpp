@@ -6,21 +6,32 @@
 #include "io/config_compare.hpp"
 #include "io/input_error.hpp"
 #include "io/text.hpp"
+#include "sweep/unsteady_extension.hpp"
 
 namespace dilatant::sweep {
 
 PointState inspect_point_folder(const SweepPoint& point, const std::filesystem::path& folder) {
+  return inspect_point_folder(point, folder, std::nullopt).state;
+}
+
+PointFolder inspect_point_folder(const SweepPoint& point, const std::filesystem::path& folder,
+                                 std::optional<double> cap) {
   const auto config = folder / "config.toml";
-  if (!std::filesystem::is_regular_file(config)) return PointState::Fresh;
-  if (const auto difference = config_difference(read_input_file(config, "run's configuration"),
-                                                point.config, "in this sweep"))
+  if (!std::filesystem::is_regular_file(config)) return {};
+  const std::string text = read_input_file(config, "run's configuration");
+  PointFolder found;
+  if (cap) found.extensions = extensions_in(text, point.config, *cap);
+  if (const auto difference =
+          config_difference(text, extended_config(point.config, found.extensions), "in this sweep"))
     throw InputError(fmt::format(
         "{}: holds a run of another configuration ({}): the sweep changed since it ran; use "
         "another --out, or delete that folder to run the point anew",
         folder.string(), *difference));
-  if (std::filesystem::is_regular_file(folder / "summary.json")) return PointState::Done;
-  if (std::filesystem::is_regular_file(folder / "checkpoint.bin")) return PointState::Resumable;
-  return PointState::Fresh;
+  if (std::filesystem::is_regular_file(folder / "summary.json"))
+    found.state = PointState::Done;
+  else if (std::filesystem::is_regular_file(folder / "checkpoint.bin"))
+    found.state = PointState::Resumable;
+  return found;
 }
 
 nlohmann::json read_point_summary(const std::filesystem::path& file) {
@@ -32,7 +43,9 @@ std::map<std::string, std::size_t> other_versions_of_done_points(const SweepPlan
   std::map<std::string, std::size_t> versions;
   for (const SweepPoint& point : plan.points) {
     const auto folder = out / point.folder;
-    if (inspect_point_folder(point, folder) != PointState::Done) continue;
+    if (inspect_point_folder(point, folder, plan.settings.extend_unsteady_to).state !=
+        PointState::Done)
+      continue;
     try {
       const nlohmann::json summary = read_point_summary(folder / "summary.json");
       const std::string version = summary.value("version", std::string("unknown"));

@@ -13,10 +13,13 @@
 // file changed under an existing output folder: that is refused (InputError,
 // exit code 2) rather than mixing runs of two sweeps in one table. Comments
 // are ignored in the comparison (they name the file the sweep was read from).
+// Under sweep.extend_unsteady_to, a folder whose run extended the point
+// (sweep/unsteady_extension.hpp) is the point's too, with its count.
 #include <cstddef>
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "sweep/sweep_plan.hpp"
@@ -26,6 +29,14 @@ namespace dilatant::sweep {
 enum class PointState { Fresh, Resumable, Done };
 
 PointState inspect_point_folder(const SweepPoint& point, const std::filesystem::path& folder);
+
+struct PointFolder {
+  PointState state = PointState::Fresh;
+  int extensions = 0;  // of the planned run: config.toml is extended_config(planned, extensions)
+};
+// The same, for a sweep with sweep.extend_unsteady_to = `cap` (none: as above).
+PointFolder inspect_point_folder(const SweepPoint& point, const std::filesystem::path& folder,
+                                 std::optional<double> cap);
 
 // A finished point's summary.json (`file`); throws InputError when it cannot
 // be read and nlohmann::json::parse_error when it is corrupt.

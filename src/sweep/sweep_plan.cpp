@@ -26,9 +26,15 @@ using namespace std::string_view_literals;
 
 constexpr std::string_view kSweepTable = "sweep";
 constexpr std::string_view kPointsTable = "points";
-constexpr std::array kSettingsKeys = {
-    "jobs"sv,        "continuation"sv, "continuation_strain"sv, "continuation_transient_strain"sv,
-    "stop_at_jam"sv, "confirm_jams"sv, "cold_start_phi"sv,      "refines"sv};
+constexpr std::array kSettingsKeys = {"jobs"sv,
+                                      "continuation"sv,
+                                      "continuation_strain"sv,
+                                      "continuation_transient_strain"sv,
+                                      "stop_at_jam"sv,
+                                      "confirm_jams"sv,
+                                      "cold_start_phi"sv,
+                                      "refines"sv,
+                                      "extend_unsteady_to"sv};
 // Keys whose single value is an array: swept only when given a list of arrays.
 constexpr std::array kArrayKeys = {"cell.size"sv, "scene.gravity"sv, "scene.box"sv,
                                    "scene.periodic"sv, "scene.planes"sv};
@@ -245,13 +251,14 @@ SweepSettings read_settings(const toml::table& t, const std::string& source,
       const auto v = node.value_exact<std::string>();
       if (!v || v->empty()) fail("expected the folder of a ramp sweep (its --out)");
       s.refines = std::filesystem::absolute(base_dir / *v).lexically_normal();
-    } else if (key.str() == "continuation_strain" || key.str() == "continuation_transient_strain") {
+    } else if (key.str() == "continuation_strain" || key.str() == "continuation_transient_strain" ||
+               key.str() == "extend_unsteady_to") {  // strains
       const auto v = node.value<double>();
       if (!v || !node.is_number()) fail("expected a number");
       if (!std::isfinite(*v)) fail("must be finite");
-      if (key.str() == "continuation_strain") {
+      if (key.str() != "continuation_transient_strain") {
         if (!(*v > 0.0)) fail("must be > 0");
-        s.continuation_strain = *v;
+        (key.str() == "continuation_strain" ? s.continuation_strain : s.extend_unsteady_to) = *v;
       } else {
         if (!(*v >= 0.0)) fail("must be >= 0");
         s.continuation_transient_strain = *v;
@@ -378,6 +385,7 @@ SweepPlan parse_sweep(std::string_view text, std::string source,
     detail::link_refinement(plan);
   } else if (plan.settings.continuation)
     detail::link_continuations(plan);
+  detail::check_extension_cap(plan);
   return plan;
 }
 

@@ -96,6 +96,9 @@ struct SweepSettings {
   ColdStartPhi cold_start_phi = ColdStartPhi::Nominal;
   // The folder of the sweep whose ramps this one refines (absolute), or empty.
   std::filesystem::path refines;
+  // A point that ends not steady runs on, one averaging window at a time, up
+  // to this run.strain (sweep/unsteady_extension.hpp); unset: never.
+  std::optional<double> extend_unsteady_to;
 };
 
 // Where the lowest extra point of a refinement's segment starts

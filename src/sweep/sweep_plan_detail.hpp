@@ -29,4 +29,7 @@ void link_refinement(SweepPlan& plan);
 // settings (its cold configuration kept as cold_start, for a jam's confirmation).
 void continue_point(const SweepPlan& plan, SweepPoint& p);
 
+// InputError when sweep.extend_unsteady_to lies below a point's run.strain.
+void check_extension_cap(const SweepPlan& plan);
+
 }  // namespace dilatant::sweep::detail

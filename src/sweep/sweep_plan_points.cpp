@@ -111,6 +111,18 @@ void continue_point(const SweepPlan& plan, SweepPoint& p) {
   p.config.resolved = to_toml(p.config);
 }
 
+// A cap below a point's own strain would cut no run short and extend none: a
+// mistake, not a setting.
+void check_extension_cap(const SweepPlan& plan) {
+  if (const auto cap = plan.settings.extend_unsteady_to)
+    for (const SweepPoint& p : plan.points)
+      if (*cap < p.config.run.strain)
+        throw InputError(fmt::format(
+            "{}: sweep.extend_unsteady_to = {} is below the run.strain of point {} ({}): it "
+            "is the largest strain a point not steady runs on to",
+            plan.source, *cap, p.folder, p.config.run.strain));
+}
+
 }  // namespace detail
 
 std::vector<std::vector<std::size_t>> continuation_chains(const SweepPlan& plan) {
@@ -158,6 +170,9 @@ std::string resolved_sweep_toml(const SweepPlan& plan) {
   if (!s.refines.empty())
     out += fmt::format("refines = {}\n",
                        toml_value_text(toml::value<std::string>(s.refines.string())));
+  if (s.extend_unsteady_to)
+    out += fmt::format("extend_unsteady_to = {}\n",
+                       toml_value_text(toml::value<double>(*s.extend_unsteady_to)));
   if (s.continuation_strain)
     out += fmt::format("continuation_strain = {}\n",
                        toml_value_text(toml::value<double>(*s.continuation_strain)));

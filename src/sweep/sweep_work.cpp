@@ -12,6 +12,7 @@
 #include "io/output_folder.hpp"
 #include "sweep/cold_start_choice.hpp"
 #include "sweep/refined_start.hpp"
+#include "sweep/unsteady_extension.hpp"
 
 namespace dilatant::sweep {
 namespace {
@@ -38,6 +39,7 @@ SweepWork::SweepWork(const SweepPlan& plan, const SweepRunOptions& options)
     : plan_(plan),
       options_(options),
       state_(plan.points.size(), PointState::Fresh),
+      extensions_(plan.points.size(), 0),
       records_(plan.points.size()),
       fraction_(plan.points.size()),
       halt_(options.stop != nullptr && options.stop->load()) {
@@ -50,7 +52,12 @@ std::size_t SweepWork::load_folders() {
   // refused as a whole.
   refuse_refining_into_itself(plan_, out);
   prepare_output_folder(out);
-  for (const auto& p : plan_.points) state_[p.index] = inspect_point_folder(p, out / p.folder);
+  for (const auto& p : plan_.points) {
+    const PointFolder f =
+        inspect_point_folder(p, out / p.folder, plan_.settings.extend_unsteady_to);
+    state_[p.index] = f.state;
+    extensions_[p.index] = f.extensions;
+  }
   std::filesystem::create_directories(out / "points");
   write_file_atomically(out / "sweep.toml", resolved_sweep_toml(plan_));
   std::size_t skipped = 0;
@@ -63,7 +70,9 @@ std::size_t SweepWork::load_folders() {
 bool SweepWork::load_point(std::size_t i) {
   const SweepPoint& p = plan_.points[i];
   const auto folder = options_.out / p.folder;
-  state_[i] = inspect_point_folder(p, folder);
+  const PointFolder f = inspect_point_folder(p, folder, plan_.settings.extend_unsteady_to);
+  state_[i] = f.state;
+  extensions_[i] = f.extensions;
   if (state_[i] != PointState::Done) return false;
   nlohmann::json summary;
   try {
@@ -102,7 +111,8 @@ std::vector<WorkUnit> SweepWork::work_units() const {
   for (const auto& chain : continuation_chains(plan_)) {
     WorkUnit unit;
     for (std::size_t i : chain)
-      if (state_[i] != PointState::Done || needs_confirmation(i)) unit.push_back(i);
+      if (state_[i] != PointState::Done || needs_confirmation(i) || needs_extension(i))
+        unit.push_back(i);
     if (!unit.empty()) units.push_back(std::move(unit));
   }
   return units;
@@ -202,8 +212,23 @@ void SweepWork::run_point(std::size_t i) {
   if (halt_.load()) return;
   const SweepPoint& p = plan_.points[i];
   const auto folder = options_.out / p.folder;
-  if (state_[i] == PointState::Done) {  // in the unit for its jam's cold start only
-    confirm_jam(i);
+  if (state_[i] == PointState::Done) {  // in the unit to run on, or for its jam's cold start
+    if (needs_extension(i)) {
+      nlohmann::json summary;
+      {
+        std::lock_guard lock(mutex_);
+        summary = records_[i].summary;
+        records_[i].status = PointStatus::Running;
+        changed(i, false);
+      }
+      try {
+        if (!finish_run(i, std::move(summary))) return;
+      } catch (const std::exception& e) {
+        finish(i, PointStatus::Failed, one_line(e.what()));
+        return;
+      }
+    }
+    if (needs_confirmation(i)) confirm_jam(i);
     return;
   }
   std::filesystem::path start_from;
@@ -256,14 +281,15 @@ void SweepWork::run_point(std::size_t i) {
     o.stop_requested = &halt_;
     o.start_from = o.resume ? std::filesystem::path() : start_from;
     o.progress = &fraction_[i];
-    CellOutcome outcome = run_shear_cell(p.config, o);
+    const Config config = config_of(i);
+    CellOutcome outcome = run_shear_cell(config, o);
     if (o.resume && !outcome.interrupted &&
         !std::filesystem::is_regular_file(folder / "summary.json")) {
       // The checkpoint is the final state of a run whose result files are
       // gone (summary.json deleted to redo the point): run it anew.
       o.resume = false;
       o.start_from = start_from;
-      outcome = run_shear_cell(p.config, o);
+      outcome = run_shear_cell(config, o);
     }
     if (outcome.interrupted) {
       finish(i, PointStatus::Pending, "");
@@ -273,14 +299,56 @@ void SweepWork::run_point(std::size_t i) {
       throw std::runtime_error("the run ended without writing summary.json");
     // The table takes the summary the run wrote, in memory; only a run that
     // had finished before this sweep (resumed with nothing left) is read back.
-    finish(i, PointStatus::Done, "",
-           outcome.summary.is_object() ? std::move(outcome.summary)
-                                       : read_point_summary(folder / "summary.json"));
+    nlohmann::json summary = outcome.summary.is_object()
+                                 ? std::move(outcome.summary)
+                                 : read_point_summary(folder / "summary.json");
+    if (!finish_run(i, std::move(summary))) return;
   } catch (const std::exception& e) {
     finish(i, PointStatus::Failed, one_line(e.what()));
     return;
   }
   if (needs_confirmation(i)) confirm_jam(i);
+}
+
+Config SweepWork::config_of(std::size_t i) const {
+  return extended_config(plan_.points[i].config, extensions_[i]);
+}
+
+// Whether a point continues from point i's final state already: then that
+// state is no longer point i's to change.
+bool SweepWork::successor_started(std::size_t i) const {
+  for (const SweepPoint& q : plan_.points)
+    if (q.continues_from == i &&
+        std::filesystem::is_regular_file(options_.out / q.folder / "config.toml"))
+      return true;
+  return false;
+}
+
+bool SweepWork::needs_extension(std::size_t i) const {
+  const auto cap = plan_.settings.extend_unsteady_to;
+  if (!cap || state_[i] != PointState::Done || successor_started(i)) return false;
+  const PointRecord r = record(i);
+  return r.status == PointStatus::Done && sweep::needs_extension(r.summary, config_of(i), *cap);
+}
+
+bool SweepWork::finish_run(std::size_t i, nlohmann::json summary) {
+  const auto cap = plan_.settings.extend_unsteady_to;
+  const SweepPoint& p = plan_.points[i];
+  if (cap && !successor_started(i) &&
+      !run_on_while_unsteady({.folder = options_.out / p.folder,
+                              .name = p.folder,
+                              .planned = p.config,
+                              .cap = *cap,
+                              .halt = &halt_,
+                              .progress = &fraction_[i],
+                              .note = [this](std::string line) { add_note(std::move(line)); }},
+                             extensions_[i], summary)) {
+    state_[i] = PointState::Resumable;
+    finish(i, PointStatus::Pending, "");
+    return false;
+  }
+  finish(i, PointStatus::Done, "", std::move(summary));
+  return true;
 }
 
 void SweepWork::finish(std::size_t i, PointStatus status, const std::string& error,
@@ -308,81 +376,6 @@ void SweepWork::changed(std::size_t i, bool table_changed) {
   events_.table_changed = events_.table_changed || table_changed;
   events_.changed_points.push_back(i);
   changed_.notify_all();
-}
-
-void SweepWork::worker_started() {
-  std::lock_guard lock(mutex_);
-  ++events_.active_workers;
-}
-
-void SweepWork::worker_ended() {
-  std::lock_guard lock(mutex_);
-  --events_.active_workers;
-  changed_.notify_all();
-}
-
-SweepEvents SweepWork::wait_for_events(std::chrono::milliseconds timeout) {
-  std::unique_lock lock(mutex_);
-  changed_.wait_for(lock, timeout);
-  SweepEvents out = std::move(events_);
-  events_ = SweepEvents{};
-  events_.active_workers = out.active_workers;
-  return out;
-}
-
-PointRecord SweepWork::record(std::size_t i) const {
-  std::lock_guard lock(mutex_);
-  return records_[i];
-}
-
-void SweepWork::set_record(std::size_t i, PointRecord record) {
-  std::lock_guard lock(mutex_);
-  records_[i] = std::move(record);
-  changed(i, records_[i].status != PointStatus::Running);
-}
-
-void SweepWork::add_note(std::string note) {
-  std::lock_guard lock(mutex_);
-  events_.notes.push_back(std::move(note));
-  changed_.notify_all();
-}
-
-std::vector<PointStatus> SweepWork::statuses() const {
-  std::vector<PointStatus> out;
-  std::lock_guard lock(mutex_);
-  for (const auto& r : records_) out.push_back(r.status);
-  return out;
-}
-
-std::vector<std::pair<std::size_t, double>> SweepWork::running_fractions() const {
-  std::vector<std::pair<std::size_t, double>> out;
-  std::lock_guard lock(mutex_);
-  for (std::size_t i = 0; i < records_.size(); ++i)
-    if (records_[i].status == PointStatus::Running) out.emplace_back(i, fraction_[i].load());
-  return out;
-}
-
-SweepOutcome SweepWork::outcome() const {
-  SweepOutcome outcome;
-  outcome.points = plan_.points.size();
-  std::lock_guard lock(mutex_);
-  for (const auto& r : records_) {
-    outcome.done += r.status == PointStatus::Done;
-    outcome.failed += r.status == PointStatus::Failed;
-    outcome.pending += r.status == PointStatus::Pending || r.status == PointStatus::Running;
-    outcome.above_jam += r.status == PointStatus::Skipped;
-  }
-  return outcome;
-}
-
-void SweepWork::write_table() const {
-  std::vector<PointRecord> records;
-  {
-    std::lock_guard lock(mutex_);
-    records = records_;
-  }
-  write_file_atomically(options_.out / "flowcurves.csv",
-                        flowcurves_csv(plan_, records, options_.out));
 }
 
 }  // namespace dilatant::sweep

@@ -96,6 +96,16 @@ class SweepWork {
   // jam's cold start). Returns whether it is done.
   bool load_point(std::size_t i);
   bool needs_confirmation(std::size_t i) const;
+  // Point i as its folder runs it: planned, or extended (unsteady_extension.hpp).
+  Config config_of(std::size_t i) const;
+  // A finished point that is not steady, whose run may still go on (no
+  // point continues from it yet): sweep.extend_unsteady_to.
+  bool needs_extension(std::size_t i) const;
+  bool successor_started(std::size_t i) const;
+  // Point i's run ended with `summary`: it runs on while it is not steady
+  // (sweep.extend_unsteady_to), then is recorded done; false when stopped
+  // meanwhile (recorded pending, its folder resumable).
+  bool finish_run(std::size_t i, nlohmann::json summary);
   ColdStartChoice cold_choice(std::size_t i, bool search) const;
   void confirm_jam(std::size_t i);
   void run_point(std::size_t i);
@@ -106,6 +116,7 @@ class SweepWork {
   const SweepPlan& plan_;
   const SweepRunOptions& options_;
   std::vector<PointState> state_;              // each element touched by one thread at a time
+  std::vector<int> extensions_;                // of each point's run; as state_
   std::vector<PointRecord> records_;           // guarded by mutex_
   std::vector<std::atomic<double>> fraction_;  // of each run's strain; -1 before it starts
   std::atomic<bool> halt_;

@@ -185,6 +185,57 @@ TEST(ExtendRun, AShorterStrainOrAnotherKeyIsRefused) {
   std::filesystem::remove_all(out);
 }
 
+// A run resumed with its transient moved to the strain it had run (how a
+// sweep runs on a point that is not steady, sweep/unsteady_extension.hpp):
+// its rows are those of a run made with that transient from the start, and
+// its velocity profile averages past the new transient only. The profile is
+// added to per step once past the transient; the first run's last step
+// crossed its run.strain, so it alone (a weight of at most one step, N dt)
+// is in the run made whole and not in the resumed one. A transient moved into
+// the strain already run is refused.
+TEST(ExtendRun, AMovedTransientStartsTheAveragesAnewThere) {
+  const auto whole = fresh_dir("moved_whole");
+  const auto moved = fresh_dir("moved");
+  // Total profile weight: the sum of dt x spheres over the bins.
+  const auto weight = [&](const std::filesystem::path& dir) {
+    std::istringstream lines(read(dir / "velocity_profile.csv"));
+    std::string line;
+    std::getline(lines, line);  // header: z,vx,weight
+    double sum = 0.0;
+    while (std::getline(lines, line)) sum += std::stod(line.substr(line.rfind(',') + 1));
+    return sum;
+  };
+  const Config later = small_cell({"run.strain=0.1", "run.transient_strain=0.04"});
+  run_into(later, whole, false);
+  run_into(small_cell({"run.strain=0.04"}), moved, false);  // transient 0.01
+  const double first_window = weight(moved);
+  try {
+    run_into(small_cell({"run.strain=0.1", "run.transient_strain=0.03"}), moved, true);
+    ADD_FAILURE() << "a transient moved into the strain already run was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("run.transient_strain = 0.03"), std::string::npos)
+        << e.what();
+  }
+  run_into(later, moved, true);
+  EXPECT_EQ(read(whole / "timeseries.csv"), read(moved / "timeseries.csv"));
+  const nlohmann::json a = physics_of(whole / "summary.json");
+  const nlohmann::json b = physics_of(moved / "summary.json");
+  for (const char* key : {"eta", "gamma_dot", "frac_bl", "wall_velocity_drift", "steady"})
+    EXPECT_EQ(a[key], b[key]) << key;
+  const double spheres = a["mobile_spheres"].get<double>();
+  const double dt_mean = a["time"].get<double>() / a["steps"].get<double>();
+  const double past = weight(whole);
+  ASSERT_GT(past, 0.0);
+  // One step apart: at most N dt_max; 4 dt_mean bounds dt_max here (the one
+  // step measured 1.02 dt_mean).
+  EXPECT_NEAR(weight(moved), past, 4.0 * spheres * dt_mean);
+  // The bound tells the windows apart: the first run's own window (strain 0.01
+  // to 0.04), which a profile not started anew would still hold, weighs more.
+  EXPECT_LT(4.0 * spheres * dt_mean, first_window);
+  std::filesystem::remove_all(whole);
+  std::filesystem::remove_all(moved);
+}
+
 // The parallel sweep (solver/slab_partition.hpp) fixes the order of the
 // Gauss–Seidel updates by geometry alone: two threads give the same bits as
 // one. The gap of 11 R holds four slabs, so two threads really share sweeps.
