@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <limits>
+
 #include "dilatant/version.hpp"
 #include "io/config_compare.hpp"
 #include "io/input_error.hpp"
@@ -21,8 +23,20 @@ PointFolder inspect_point_folder(const SweepPoint& point, const std::filesystem:
   const std::string text = read_input_file(config, "run's configuration");
   PointFolder found;
   if (cap) found.extensions = extensions_in(text, point.config, *cap);
-  if (const auto difference =
-          config_difference(text, extended_config(point.config, found.extensions), "in this sweep"))
+  const auto difference =
+      config_difference(text, extended_config(point.config, found.extensions), "in this sweep");
+  // A point run on by a sweep that set sweep.extend_unsteady_to, read by one
+  // that does not (or sets it lower): say so, rather than "another configuration".
+  if (const int k = extensions_in(text, point.config, std::numeric_limits<double>::infinity());
+      difference && k > 0) {
+    const double strain = extended_config(point.config, k).run.strain;
+    throw InputError(fmt::format(
+        "{}: holds this point run on to strain {} because it was not steady "
+        "(sweep.extend_unsteady_to), which this sweep {}: set sweep.extend_unsteady_to to at "
+        "least {} to take it up, or delete that folder to run the point anew",
+        folder.string(), strain, cap ? fmt::format("caps at {}", *cap) : "does not set", strain));
+  }
+  if (difference)
     throw InputError(fmt::format(
         "{}: holds a run of another configuration ({}): the sweep changed since it ran; use "
         "another --out, or delete that folder to run the point anew",

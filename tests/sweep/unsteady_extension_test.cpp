@@ -88,14 +88,25 @@ TEST(UnsteadyExtension, AFolderOfAnExtendedRunIsThePointsWithItsCount) {
   EXPECT_EQ(f.extensions, 2);
   dir.write(p.folder + "/summary.json", "{}");
   EXPECT_EQ(inspect_point_folder(p, folder, 1.5).state, PointState::Done);
-  // Without the setting, or with a cap below it, it is a run of another
-  // configuration, as any changed run.strain.
-  for (const std::optional<double> cap : {std::optional<double>(), std::optional<double>(0.6)}) {
-    const std::string message =
-        test::input_error_message([&] { inspect_point_folder(p, folder, cap); });
-    EXPECT_NE(message.find("run.strain = 0.7 there, 0.3 in this sweep"), std::string::npos)
-        << message;
-  }
+  // Without the setting, or with a cap below it, it is refused, saying why.
+  EXPECT_NE(test::input_error_message([&] { inspect_point_folder(p, folder, std::nullopt); })
+                .find(folder.string() +
+                      ": holds this point run on to strain 0.7 because it was not steady "
+                      "(sweep.extend_unsteady_to), which this sweep does not set: set "
+                      "sweep.extend_unsteady_to to at least 0.7"),
+            std::string::npos);
+  EXPECT_NE(test::input_error_message([&] {
+              inspect_point_folder(p, folder, 0.6);
+            }).find("which this sweep caps at 0.6"),
+            std::string::npos);
+  // A strain that is no whole number of windows on is another configuration.
+  dir.write(p.folder + "/config.toml",
+            resolved_toml(
+                parse_sweep(tiny_ramp(""), "s.toml", ".", {"run.strain=0.4"}).points[0].config));
+  EXPECT_NE(test::input_error_message([&] {
+              inspect_point_folder(p, folder, 1.5);
+            }).find("run.strain = 0.4 there, 0.3 in this sweep"),
+            std::string::npos);
 }
 
 TEST(UnsteadyExtension, ACapBelowAPointsStrainIsRefused) {
