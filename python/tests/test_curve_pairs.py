@@ -97,6 +97,27 @@ def test_pairs_by_lambda_count_only_valid_steady_points(tmp_path):
     assert result["chi2_raw"] == pytest.approx(chi2) and result["chi2"] < chi2
 
 
+def test_range_filters_keep_the_rows_below_or_above_a_number(tmp_path):
+    """lambda<VALUE and lambda>VALUE compare numbers (1.0 is not below 1), a
+    row whose field is empty passes neither, and = still matches 1 with 1.0."""
+    flow = table(tmp_path / "flowcurves.csv", [
+        "1,0.4,0.1,done,true,true,60,3",
+        "1,0.4,1,done,true,true,90,4",
+        "1,0.4,10,done,true,true,150,3",
+        "2,0.4,0.1,done,true,true,64,4",
+        "2,0.4,1.0,done,true,true,81,3",
+        "2,0.4,10,done,true,true,140,4"])
+    rows, result = curve_pairs.compare(flow, flow, ["cell.seed=1", "lambda<1"],
+                                       ["cell.seed=2"], blocks=0)
+    assert [r["key"] for r in rows] == [0.1] and result["counted"] == 1
+    rows, _ = curve_pairs.compare(flow, flow, ["cell.seed=1", "lambda>0.1", "lambda<10"],
+                                  ["cell.seed=2", "lambda=1"], blocks=0)
+    assert [r["key"] for r in rows] == [1.0]
+    rows, _ = curve_pairs.compare(flow, flow, ["cell.seed=1", "lambda>0.5"],
+                                  ["cell.seed=2", "mu0>0.3"], blocks=0)
+    assert [r["key"] for r in rows] == [1.0, 10.0]
+
+
 def test_curves_that_differ_by_their_noise_give_chi2_per_pair_one(tmp_path):
     """Two curves about one truth, each point the mean of 10 block means with
     the standard error of those means as its error bar, as the engine measures
@@ -130,6 +151,9 @@ def test_curves_that_differ_by_their_noise_give_chi2_per_pair_one(tmp_path):
     (["T", "T", "--out", "o"], "lambda 1 a second time among the rows of a"),
     (["T", "T", "--a-where", "nocolumn=1", "--out", "o"], "no column nocolumn"),
     (["T", "T", "--a-where", "seed", "--out", "o"], "--a-where 'seed': expected COLUMN=VALUE"),
+    (["T", "T", "--a-where", "=1", "--out", "o"], "--a-where '=1': expected COLUMN=VALUE"),
+    (["T", "T", "--b-where", "lambda<x", "--out", "o"],
+     "--b-where 'lambda<x': < compares numbers, and 'x' is none"),
     (["T", "T", "--a-where", "cell.seed=1", "--b-where", "cell.seed=2", "--quantity", "gamma_dot",
       "--out", "o"], "no column gamma_dot, gamma_dot_err"),
     (["T", "T", "--a-where", "cell.seed=1", "--b-where", "mu0=0.1", "--out", "o"],

@@ -10,7 +10,9 @@ seeds' curves agree (docs/paper-reproduction.md "The decisive study"):
 Reads the `done` rows of two flowcurves.csv tables (the same file twice for
 two seeds of one sweep) that match their --a-where / --b-where filters (a
 value compared as a number where both sides are numbers: lambda=1 matches
-1.0), and pairs them by --key. Writes PREFIX.csv, one row a pair in the order
+1.0; COLUMN<VALUE and COLUMN>VALUE keep the rows whose number lies below or
+above, e.g. lambda<316 for a curve's stresses below tau 1e5), and pairs them
+by --key. Writes PREFIX.csv, one row a pair in the order
 of the key (its first column named after it):
 
     lambda, a, a_err, b, b_err, b_over_a, z, nu, z_normal, counted, reason
@@ -117,13 +119,20 @@ def welch_nu(a_err, b_err, blocks):
     return max(1, math.floor(nu + 1e-9))
 
 
+OPERATORS = "=<>"
+
+
 def parse_where(items, flag):
+    """COLUMN=VALUE, COLUMN<VALUE or COLUMN>VALUE, each as (column, operator, value)."""
     out = []
     for item in items:
-        column, sep, value = item.partition("=")
-        if not sep or not column:
-            raise BadInput(f"{flag} {item!r}: expected COLUMN=VALUE")
-        out.append((column, value))
+        at = min((item.find(op) for op in OPERATORS if op in item), default=-1)
+        column, op, value = item[:at], item[at:at + 1], item[at + 1:]
+        if at <= 0:
+            raise BadInput(f"{flag} {item!r}: expected COLUMN=VALUE, COLUMN<VALUE or COLUMN>VALUE")
+        if op != "=" and not math.isfinite(number(value)):
+            raise BadInput(f"{flag} {item!r}: {op} compares numbers, and {value!r} is none")
+        out.append((column, op, value))
     return out
 
 
@@ -134,6 +143,15 @@ def same(text, value):
     return text == value
 
 
+def matches(text, op, value):
+    """Whether a row's field passes one filter (a field that is no number
+    passes no < or > filter)."""
+    if op == "=":
+        return same(text, value)
+    a = number(text)
+    return math.isfinite(a) and (a < number(value) if op == "<" else a > number(value))
+
+
 def side(path, where, key, quantity, name):
     """The `done` rows of one table that match its filters, by key value."""
     path = Path(path)
@@ -142,13 +160,13 @@ def side(path, where, key, quantity, name):
     rows = read_rows(path)
     columns = set(rows[0]) if rows else set()
     needed = {"status", "valid", "steady", key, quantity, quantity + "_err"}
-    needed |= {column for column, _ in where}
+    needed |= {column for column, _, _ in where}
     missing = sorted(needed - columns)
     if missing:
         raise BadInput(f"{path}: no column {', '.join(missing)}")
     chosen = {}
     for line, r in enumerate(rows, start=2):
-        if r["status"] != "done" or not all(same(r[c], v) for c, v in where):
+        if r["status"] != "done" or not all(matches(r[c], op, v) for c, op, v in where):
             continue
         k = number(r[key])
         if not math.isfinite(k):
@@ -159,7 +177,7 @@ def side(path, where, key, quantity, name):
         chosen[k] = r
     if not chosen:
         raise BadInput(f"{path}: no finished row matches --{name}-where "
-                       f"{' '.join(f'{c}={v}' for c, v in where) or '(none)'}")
+                       f"{' '.join(f'{c}{op}{v}' for c, op, v in where) or '(none)'}")
     return chosen
 
 
@@ -225,12 +243,13 @@ def cell(value):
 def compare(a, b, a_where=(), b_where=(), key="lambda", quantity="eta", blocks=10):
     """From Python: the pairs (a list of dicts, the CSV's columns, `key` under
     "key") and the summary (the JSON's numbers) of two flowcurves.csv files,
-    filtered by COLUMN=VALUE strings. Raises BadInput (a ValueError) with the
+    filtered by COLUMN=VALUE (or <, >) strings. Raises BadInput (a ValueError) with the
     line the command line prints."""
     if blocks < 0 or blocks == 1:
         raise BadInput(f"--blocks {blocks}: an error bar needs at least 2 blocks (0: exact)")
-    a_rows = side(a, parse_where(a_where, "--a-where"), key, quantity, "a")
-    b_rows = side(b, parse_where(b_where, "--b-where"), key, quantity, "b")
+    a_filters, b_filters = parse_where(a_where, "--a-where"), parse_where(b_where, "--b-where")
+    a_rows = side(a, a_filters, key, quantity, "a")
+    b_rows = side(b, b_filters, key, quantity, "b")
     rows = pairs(a_rows, b_rows, quantity, blocks)
     if not rows:
         raise BadInput(f"{a} and {b}: no {key} in common among the chosen rows")
@@ -243,8 +262,10 @@ def main(argv):
     parser.add_argument("a")
     parser.add_argument("b")
     parser.add_argument("--out", required=True, help="PREFIX of PREFIX.csv and PREFIX.json")
-    parser.add_argument("--a-where", action="append", default=[], metavar="COLUMN=VALUE")
-    parser.add_argument("--b-where", action="append", default=[], metavar="COLUMN=VALUE")
+    parser.add_argument("--a-where", action="append", default=[], metavar="COLUMN=VALUE",
+                        help="keep a's rows where COLUMN=VALUE (or COLUMN<VALUE, COLUMN>VALUE)")
+    parser.add_argument("--b-where", action="append", default=[], metavar="COLUMN=VALUE",
+                        help="keep b's rows where COLUMN=VALUE (or COLUMN<VALUE, COLUMN>VALUE)")
     parser.add_argument("--key", default="lambda")
     parser.add_argument("--quantity", default="eta")
     parser.add_argument("--blocks", type=int, default=10,
