@@ -19,7 +19,8 @@
 # dense-window-phi dst-map dst-map-mu0 dst-map-phi dst-map-dense dst-map-seeds
 # dst-size dst-size-phi dst-map-films sc-scaling lees-edwards-fig2 lees-edwards-dst decisive-le decisive-le-mu0.4 decisive-le-mu0.4-refine decisive-le-refine decisive-le-mu0 decisive-walls bulk-boundary"),
 # DILATANT_SKIP_BUILD=1 to use build/ as it is, DILATANT=PATH to run another
-# binary (a study pinned to the version it started with: scripts/pinned-binary.sh),
+# binary (a study pinned to the version it started with: scripts/pinned-binary.sh;
+# its table is analysed by build/dilatant all the same, into OUT/SWEEP/analysis-current),
 # DILATANT_REFINE=PATH the binary of the *-refine sweeps (default build/dilatant).
 # A sweep with a folder in runs/ (a study kept in the repository across
 # machines, scripts/study-archive.sh) is restored from it before it runs and
@@ -55,7 +56,14 @@ for sweep in ${DILATANT_PAPER_SWEEPS:-$sweeps}; do
   if [[ ! -f $out/$sweep/flowcurves.csv ]]; then continue; fi  # refused before it ran
   mkdir -p "$docs/$sweep"
   cp "$out/$sweep/flowcurves.csv" "$out/$sweep/sweep.toml" "$docs/$sweep/"
-  if [[ -d $out/$sweep/analysis ]]; then cp "$out/$sweep/analysis/curves.csv" "$docs/$sweep/"; fi
+  if [[ $binary != ./build/dilatant && -f $docs/$sweep/flowcurves.csv ]]; then
+    # A sweep run by a pinned binary (DILATANT) is analysed by this version:
+    # the analysis reads the table alone, and its rules (fall_stress since
+    # 0.12.0) are this version's.
+    ./build/dilatant analyze "$docs/$sweep/flowcurves.csv" --out "$out/$sweep/analysis-current" \
+      --no-plots >/dev/null || status=$?
+    cp "$out/$sweep/analysis-current/curves.csv" "$docs/$sweep/"
+  elif [[ -d $out/$sweep/analysis ]]; then cp "$out/$sweep/analysis/curves.csv" "$docs/$sweep/"; fi
   # The jams' cold starts (sweep.confirm_jams): their summaries, one per jammed point.
   for cold in "$out/$sweep"/points/*/cold-start/summary.json; do
     [[ -f $cold ]] || continue
