@@ -4,6 +4,8 @@
 //   DIR/sweep.toml           the resolved sweep (sweep_plan.hpp)
 //   DIR/flowcurves.csv       one row per point (flow_table.hpp), rewritten
 //                            atomically whenever a point finishes
+//   DIR/progress.txt         the progress line and the running points'
+//                            shares, every 10 s (sweep_watch.hpp)
 //   DIR/points/NNN-label/    each point's run folder (as `dilatant run` writes),
 //                            plus error.txt when the point failed
 //

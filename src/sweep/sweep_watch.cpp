@@ -3,10 +3,24 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <ctime>
 #include <iostream>
+
+#include "io/atomic_file.hpp"
 
 namespace dilatant::sweep {
 namespace {
+
+constexpr auto kFileInterval = std::chrono::seconds(10);
+
+std::string utc_now() {
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text;
+}
 
 std::string duration_text(double seconds) {
   const auto s = static_cast<long>(seconds + 0.5);
@@ -22,7 +36,8 @@ SweepWatch::SweepWatch(SweepWork& work, const SweepRunOptions& options)
       options_(options),
       baseline_(work.plan().points.size(), -1.0),
       start_(Clock::now()),
-      last_line_(Clock::now() - std::chrono::seconds(10)) {}
+      last_line_(Clock::now() - std::chrono::seconds(10)),
+      last_file_(Clock::now() - std::chrono::seconds(60)) {}
 
 void SweepWatch::tick(const SweepEvents& events) {
   if (options_.stop != nullptr && options_.stop->load()) work_.halt();
@@ -39,6 +54,7 @@ void SweepWatch::tick(const SweepEvents& events) {
     if (options_.report_failures || options_.show_progress)
       std::cerr << (progress_shown_ ? "\r\033[K" : "") << note << "\n";
   if (options_.progress != nullptr) options_.progress->store(fraction_done());
+  if (Clock::now() - last_file_ >= kFileInterval) write_progress_file(false);
   if (options_.show_progress && Clock::now() - last_line_ >= std::chrono::seconds(1)) {
     std::cerr << "\r\033[K" << progress_line() << std::flush;
     progress_shown_ = true;
@@ -48,6 +64,7 @@ void SweepWatch::tick(const SweepEvents& events) {
 
 void SweepWatch::finish() {
   if (options_.progress != nullptr) options_.progress->store(fraction_done());
+  write_progress_file(true);
   if (progress_shown_) std::cerr << "\n";
 }
 
@@ -84,6 +101,26 @@ std::string SweepWatch::progress_line() {
   return fmt::format("sweep: {}/{} done, {} running, {} failed; {} elapsed, {} left", done,
                      status.size(), running, failed, duration_text(elapsed),
                      remaining > 0.0 ? left : "nothing");
+}
+
+void SweepWatch::write_progress_file(bool ended) {
+  last_file_ = Clock::now();
+  if (progress_file_failed_) return;
+  std::string text =
+      fmt::format("# dilatant sweep: progress at {} ({})\n{}\n", utc_now(),
+                  ended ? "this invocation has ended" : "rewritten every 10 s", progress_line());
+  for (const auto& [i, fraction] : work_.running_fractions())
+    text += fmt::format("running: {} {:.0f}%\n", work_.plan().points[i].folder,
+                        100.0 * std::clamp(fraction, 0.0, 1.0));
+  try {
+    write_file_atomically(options_.out / "progress.txt", text);
+  } catch (const std::exception& e) {
+    // The table is what a sweep must keep; a progress file it cannot write is
+    // said once and given up.
+    std::cerr << (progress_shown_ ? "\r\033[K" : "")
+              << fmt::format("dilatant: cannot write progress.txt: {}\n", e.what());
+    progress_file_failed_ = true;
+  }
 }
 
 }  // namespace dilatant::sweep

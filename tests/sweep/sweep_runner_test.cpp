@@ -12,6 +12,8 @@
 #include "analysis/delimited_text.hpp"
 #include "app/cli_runner.hpp"
 #include "drivers/shear_cell_run.hpp"
+#include "sweep/sweep_watch.hpp"
+#include "sweep/sweep_work.hpp"
 #include "sweep/tiny_sweep.hpp"
 
 namespace dilatant::sweep::sweep_runner_test {
@@ -67,6 +69,8 @@ TEST(SweepRunner, AnInterruptedPointResumesFromItsCheckpointWithTheSameResult) {
   const auto pending = table(out / "flowcurves.csv");
   ASSERT_EQ(pending.size(), 5u);
   for (std::size_t r = 1; r < 5; ++r) EXPECT_EQ(column(pending, r, "status"), "pending");
+  EXPECT_NE(test::read_text(out / "progress.txt").find("sweep: 0/4 done, 0 running, 0 failed"),
+            std::string::npos);
 
   // Point 2 interrupted after its first step (as SIGINT does), then the sweep
   // again: it resumes point 2 and runs the others.
@@ -80,8 +84,36 @@ TEST(SweepRunner, AnInterruptedPointResumesFromItsCheckpointWithTheSameResult) {
   EXPECT_EQ(resumed.done, 4u);
   EXPECT_EQ(resumed.skipped, 0u);
   EXPECT_EQ(table(out / "flowcurves.csv"), table(dir.path() / "straight" / "flowcurves.csv"));
+  const std::string progress = test::read_text(out / "progress.txt");
+  EXPECT_NE(progress.find("(this invocation has ended)\nsweep: 4/4 done, 0 running, 0 failed"),
+            std::string::npos)
+      << progress;
+  EXPECT_EQ(progress.find("running:"), std::string::npos) << progress;
   EXPECT_EQ(test::read_text(out / p.folder / "timeseries.csv"),
             test::read_text(dir.path() / "straight" / p.folder / "timeseries.csv"));
+}
+
+// DIR/progress.txt while a sweep runs (sweep_watch.hpp): the progress line
+// and each running point's share of its run, whether or not a terminal shows
+// the line (here none does).
+TEST(SweepRunner, ProgressFileNamesTheRunningPointsAndTheirShare) {
+  test::TempDir dir;
+  const SweepPlan plan = parse_sweep(test::kTinyGrid, "s.toml", ".", {});
+  const SweepRunOptions o = options(dir.path());
+  SweepWork work(plan, o);
+  work.load_folders();
+  PointRecord running;
+  running.status = PointStatus::Running;
+  work.set_record(1, running);
+  work.set_fraction(1, 0.4);
+  SweepWatch watch(work, o);
+  watch.tick(SweepEvents{});
+  const std::string text = test::read_text(dir.path() / "progress.txt");
+  EXPECT_EQ(text.rfind("# dilatant sweep: progress at 20", 0), 0u) << text;
+  EXPECT_NE(text.find("(rewritten every 10 s)\nsweep: 0/4 done, 1 running, 0 failed"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("\nrunning: " + plan.points[1].folder + " 40%\n"), std::string::npos) << text;
 }
 
 TEST(SweepRunner, ContinuationStartsEachLambdaFromThePreviousFinalState) {
