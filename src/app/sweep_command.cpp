@@ -195,6 +195,15 @@ int execute_sweep_command(const SweepCommandArgs& args) {
             : "",
         (out / "flowcurves.csv").string());
   }
+  // As `dilatant run` warns about its own: a sweep whose points' solver
+  // stopped at its cap says so, once, with the worst point.
+  if (!args.quiet && outcome.unconverged_points > 0)
+    std::cerr << fmt::format(
+        "dilatant: warning: {} of {} points have steps that did not converge within "
+        "solver.max_iterations, up to {:.2g}% of a point's ({}; frac_steps_unconverged in "
+        "flowcurves.csv)\n",
+        outcome.unconverged_points, outcome.points, 100.0 * outcome.most_unconverged,
+        outcome.most_unconverged_point);
   if (outcome.failed > 0) {
     std::cerr << fmt::format(
         "dilatant: {} of {} points failed (see the error column of flowcurves.csv); run the "

@@ -24,6 +24,7 @@
 #include <atomic>
 #include <cstddef>
 #include <filesystem>
+#include <string>
 
 #include "sweep/sweep_plan.hpp"
 
@@ -49,6 +50,11 @@ struct SweepOutcome {
   std::size_t pending = 0;    // not run (interrupted)
   std::size_t above_jam = 0;  // not run: above the jam of their ramp
   bool interrupted = false;
+  // Done points with steps that ended at solver.max_iterations, and the one
+  // with the largest share of them (frac_steps_unconverged).
+  std::size_t unconverged_points = 0;
+  double most_unconverged = 0.0;
+  std::string most_unconverged_point;
 };
 
 // Throws InputError, before running anything, when a point's folder holds a

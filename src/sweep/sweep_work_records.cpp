@@ -67,6 +67,18 @@ SweepOutcome SweepWork::outcome() const {
     outcome.pending += r.status == PointStatus::Pending || r.status == PointStatus::Running;
     outcome.above_jam += r.status == PointStatus::Skipped;
   }
+  for (std::size_t i = 0; i < records_.size(); ++i) {
+    const PointRecord& r = records_[i];
+    const double f = r.status == PointStatus::Done && r.summary.is_object()
+                         ? r.summary.value("frac_steps_unconverged", 0.0)
+                         : 0.0;
+    if (!(f > 0.0)) continue;
+    ++outcome.unconverged_points;
+    if (f > outcome.most_unconverged) {
+      outcome.most_unconverged = f;
+      outcome.most_unconverged_point = plan_.points[i].folder;
+    }
+  }
   return outcome;
 }
 

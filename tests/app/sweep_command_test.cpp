@@ -4,6 +4,7 @@
 // resuming it (a second run skips every point and changes nothing; a deleted
 // summary.json redoes that point only), a point that fails without stopping the
 // others, a changed sweep refused, bad sweep files, and the plots.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -77,7 +78,11 @@ TEST(SweepCommand, RunsTheGridThenResumesSkippingFinishedPointsAndRedoingAMissin
       "sweep", config.string(), "--out", out.string(), "--jobs", "2", "--no-plots"};
   const auto first = dir.run(command);
   ASSERT_EQ(first.exit_code, 0) << first.err;
-  EXPECT_EQ(first.err, "") << "no progress line without a terminal";
+  // No progress line without a terminal; its points' unconverged steps (a few
+  // per cent at the tiny cell's tolerance) are the one thing it warns of.
+  EXPECT_EQ(first.err.find('\r'), std::string::npos) << first.err;
+  EXPECT_EQ(first.err.rfind("dilatant: warning: ", 0), 0u) << first.err;
+  EXPECT_EQ(std::count(first.err.begin(), first.err.end(), '\n'), 1) << first.err;
   EXPECT_NE(first.out.find("sweep of 4 points: 4 done, 0 failed"), std::string::npos) << first.out;
 
   // The table: one row per point in point order, the swept keys first, then
@@ -245,6 +250,32 @@ TEST(SweepCommand, SweepsTheLeesEdwardsCell) {
       nlohmann::json::parse(read_text(out / "points" / "000-lambda=3" / "summary.json"));
   EXPECT_EQ(summary["boundary"], "lees-edwards");
   EXPECT_TRUE(summary["bottom_wall_force_x"].is_null());
+}
+
+// A sweep whose points' solver stopped at solver.max_iterations says so on
+// stderr, once, naming the worst point, as `dilatant run` warns about its
+// own; a point whose steps all converged is not counted.
+TEST(SweepCommand, APointWithUnconvergedStepsIsWarnedAbout) {
+  test::CliDir dir;
+  const fs::path config =
+      dir.write("cap.toml", test::kTinyCell +
+                                "[fluid]\nlambda = 3.0\n[[points]]\nsolver.max_iterations = "
+                                "2\n[[points]]\nsolver.max_iterations = 1000\n");
+  const fs::path out = dir.path() / "cap";
+  const auto r =
+      dir.run({"sweep", config.string(), "--out", out.string(), "--jobs", "1", "--no-plots"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Table table = read_table(out / "flowcurves.csv");
+  ASSERT_GT(std::stod(table.at(0, "frac_steps_unconverged")), 0.0);
+  ASSERT_EQ(std::stod(table.at(1, "frac_steps_unconverged")), 0.0);
+  const std::string share =
+      fmt::format("{:.2g}", 100.0 * std::stod(table.at(0, "frac_steps_unconverged")));
+  EXPECT_EQ(r.err,
+            "dilatant: warning: 1 of 2 points have steps that did not converge within "
+            "solver.max_iterations, up to " +
+                share +
+                "% of a point's (points/000-max_iterations=2; frac_steps_unconverged in "
+                "flowcurves.csv)\n");
 }
 
 TEST(SweepCommand, BadSweepFilesExitWith2AndOneLineNamingFileKeyAndPoint) {
