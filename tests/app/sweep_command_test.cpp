@@ -201,16 +201,23 @@ TEST(SweepCommand, RunsTheGridThenResumesSkippingFinishedPointsAndRedoingAMissin
   EXPECT_EQ(analyze.exit_code, 0) << analyze.err;
 }
 
+// Writes NAME.toml, the tiny cell and `extra`, and sweeps it into DIR/NAME
+// on `jobs` workers, without plots.
+test::RunResult sweep_tiny(test::CliDir& dir, const std::string& name, const std::string& extra,
+                           const std::string& jobs) {
+  const fs::path config = dir.write(name + ".toml", test::kTinyCell + extra);
+  return dir.run({"sweep", config.string(), "--out", (dir.path() / name).string(), "--jobs", jobs,
+                  "--no-plots"});
+}
+
 TEST(SweepCommand, AFailingPointIsRecordedWithItsErrorAndTheOthersFinish) {
   test::CliDir dir;
   // Three points, the second at a fraction no packing reaches.
-  const fs::path config =
-      dir.write("fail.toml", test::kTinyCell +
-                                 "[fluid]\nlambda = 3.0\n[[points]]\ncell.phi = 0.58\n[[points]]\n"
-                                 "cell.phi = 0.72\n[[points]]\ncell.phi = 0.55\n");
+  const auto r = sweep_tiny(dir, "fail",
+                            "[fluid]\nlambda = 3.0\n[[points]]\ncell.phi = 0.58\n[[points]]\n"
+                            "cell.phi = 0.72\n[[points]]\ncell.phi = 0.55\n",
+                            "2");
   const fs::path out = dir.path() / "fail";
-  const auto r =
-      dir.run({"sweep", config.string(), "--out", out.string(), "--jobs", "2", "--no-plots"});
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("point points/001-phi=0.72 failed: could not pack cell.phi = 0.72"),
             std::string::npos)
@@ -257,13 +264,11 @@ TEST(SweepCommand, SweepsTheLeesEdwardsCell) {
 // own; a point whose steps all converged is not counted.
 TEST(SweepCommand, APointWithUnconvergedStepsIsWarnedAbout) {
   test::CliDir dir;
-  const fs::path config =
-      dir.write("cap.toml", test::kTinyCell +
-                                "[fluid]\nlambda = 3.0\n[[points]]\nsolver.max_iterations = "
-                                "2\n[[points]]\nsolver.max_iterations = 1000\n");
+  const auto r = sweep_tiny(dir, "cap",
+                            "[fluid]\nlambda = 3.0\n[[points]]\nsolver.max_iterations = 2\n"
+                            "[[points]]\nsolver.max_iterations = 1000\n",
+                            "1");
   const fs::path out = dir.path() / "cap";
-  const auto r =
-      dir.run({"sweep", config.string(), "--out", out.string(), "--jobs", "1", "--no-plots"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Table table = read_table(out / "flowcurves.csv");
   ASSERT_GT(std::stod(table.at(0, "frac_steps_unconverged")), 0.0);
