@@ -33,8 +33,9 @@
 # namespace named after the file (dilatant::incline_test) so that two files'
 # helpers never meet in a batch. An edit-compile loop rebuilds a whole batch:
 #   DILATANT_UNITY=OFF scripts/build.sh     compiles each source alone.
-# The tsan tree always compiles each source alone, which also checks that every
-# library source includes what it uses.
+# The tsan tree batches its tests but compiles each source of the library and
+# the CLI alone (DILATANT_SOURCES_ALONE), which also checks that every one of
+# them includes what it uses.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -59,7 +60,8 @@ case "${1:-release}" in
     ;;
   tsan)
     dir=build-tsan
-    options=("${sanitizer_tree[@]}" -DDILATANT_TSAN=ON -DCMAKE_UNITY_BUILD=OFF)
+    options=("${sanitizer_tree[@]}" -DDILATANT_TSAN=ON -DCMAKE_UNITY_BUILD=ON
+      -DCMAKE_UNITY_BUILD_BATCH_SIZE=16 -DDILATANT_SOURCES_ALONE=ON)
     ;;
   coverage)
     dir=build-coverage
