@@ -1,7 +1,8 @@
 """The bulk flow states `dilatant predict` compiles in (data/jamming/bulk_flow_states.csv)
 are what dilatant.plots.bulk_flow_states makes from the committed flow curves, and
 the script classifies a ramp as the table's README says: cst, dst only with a
-confirming cold start, jammed at its first stress; curves outside the Lees–Edwards
+confirming cold start or a fall the analysis places (then also a ramp still
+running above it), jammed at its first stress; curves outside the Lees–Edwards
 box are left out; curves that contradict each other stop it."""
 import pytest
 
@@ -59,10 +60,16 @@ def test_ramps_are_classified_and_other_cells_left_out(tmp_path, monkeypatch, ca
         "S,0.6,0.4,100,done,false,true,0.60,0.3,0.8.0,",     # its rate fell here
         "S,0.6,0.4,1000,done,false,false,0.60,0.3,0.8.0,",   # and flows on
         "R,0.6,0.3,10,done,false,true,0.60,0,0.8.0,",
-        "R,0.6,0.3,100,done,false,true,0.60,0,0.8.0,"])      # its rate stopped growing
+        "R,0.6,0.3,100,done,false,true,0.60,0,0.8.0,",       # its rate stopped growing
+        "P,0.61,0.4,10,done,false,true,0.61,0,0.8.0,",
+        "P,0.61,0.4,100,done,false,true,0.61,0,0.8.0,",      # its rate fell here
+        "P,0.61,0.4,1000,pending,,,,,,",                     # still running above the fall
+        "Q,0.62,0.4,10,done,false,true,0.62,0,0.8.0,",
+        "Q,0.62,0.4,100,done,false,true,0.62,0,0.8.0,",
+        "Q,0.62,0.4,1000,pending,,,,,,"])                    # dst, but no fall placed
     (tmp_path / "le" / "curves.csv").write_text(
         "sample,phi,regime,dst_evidence,fall_stress\nD,0.55,cst,,\nS,0.6,dst,rate_falls,10000\n"
-        "R,0.6,dst,n_above_cap,\n")
+        "R,0.6,dst,n_above_cap,\nP,0.61,dst,rate_falls,10000\nQ,0.62,dst,n_above_cap,\n")
     # An analysis older than fall_stress: its rate_falls ramp cannot be placed.
     write_sweep(tmp_path / "old", ["T,0.6,0.3,10,done,false,true,0.60,0,0.8.0,",
                                    "T,0.6,0.3,100,done,false,true,0.60,0,0.8.0,"])
@@ -80,7 +87,12 @@ def test_ramps_are_classified_and_other_cells_left_out(tmp_path, monkeypatch, ca
     assert {r.split(",")[12]: r.split(",")[2:6] + r.split(",")[13:] for r in rows[1:]} == {
         "A": ["dst", "10", "10", "100", "jammed", ""], "C": ["jammed", "", "", "1", "", ""],
         "D": ["cst", "10", "1", "", "", ""], "S": ["dst", "1000", "100", "", "rate_falls", "100"],
-        "R": ["dst", "100", "100", "", "n_above_cap", ""]}
+        "R": ["dst", "100", "100", "", "n_above_cap", ""],
+        "P": ["dst", "100", "100", "", "rate_falls", "100"]}
+    # P counts up to its last done point, and stderr says it is not finished.
+    assert ("le/flowcurves.csv P: counted though not finished: dst by rate_falls, its rate fell "
+            "at lambda 100; 1 points above still pending or failed") in out.err
+    assert "le/flowcurves.csv Q: the ramp is not finished (1 points pending or failed)" in out.err
     assert "le/flowcurves.csv B: jammed at lambda 100 without a cold start" in out.err
     assert "walls/flowcurves.csv E: cell.boundary = walls" in out.err
     assert "le/flowcurves.csv F: the ramp is not finished (1 points pending or failed)" in out.err

@@ -134,7 +134,8 @@ BulkFlowTable BulkFlowTable::parse(const NumericCsv& csv) {
                     c_regime = csv.column("regime", needs), c_max = csv.column("max_lambda", needs),
                     c_jam = csv.column("jam_lambda", needs), c_cell = csv.column("cell", needs),
                     c_source = csv.column("source", needs), c_sample = csv.column("sample", needs);
-  const auto c_evidence = csv.find_column("dst_evidence"), c_fall = csv.find_column("fall_lambda");
+  const auto c_evidence = csv.find_column("dst_evidence"), c_fall = csv.find_column("fall_lambda"),
+             c_unconverged = csv.find_column("max_frac_unconverged");
   BulkFlowTable t;
   t.name_ = csv.source();
   for (std::size_t r = 0; r < csv.rows(); ++r) {
@@ -153,6 +154,12 @@ BulkFlowTable BulkFlowTable::parse(const NumericCsv& csv) {
     s.dst_evidence =
         dst_evidence_of(csv, r, s.state, c_evidence ? csv.text(r, *c_evidence) : std::string());
     if (c_fall) s.fall_lambda = csv.number_or(r, *c_fall, "fall_lambda", 0.0);
+    if (c_unconverged) {
+      s.max_frac_unconverged = csv.number_or(r, *c_unconverged, "max_frac_unconverged", 0.0);
+      if (!(s.max_frac_unconverged >= 0.0 && s.max_frac_unconverged <= 1.0))
+        csv.fail(r, fmt::format("max_frac_unconverged {}: a share of steps, in [0, 1]",
+                                s.max_frac_unconverged));
+    }
     check_bulk_row(csv, r, s);
     t.rows_.push_back(std::move(s));
   }
@@ -176,8 +183,10 @@ BulkDecision decide_from_bulk(const BulkFlowTable& table, double mu0, double phi
   constexpr double reach = kBulkPhiTolerance * (1.0 + 1e-9);
   BulkDecision d;
   // The deciding cst row: the one covering phi that went furthest in stress,
-  // then the one nearest phi; the loosest dst and jammed rows.
-  const BulkFlowState *cst = nullptr, *densest_cst = nullptr, *dst = nullptr, *jam = nullptr;
+  // then the one nearest phi; the deciding dst row: of those within reach of
+  // phi, the nearest, then the best converged; the loosest dst and jammed rows.
+  const BulkFlowState *cst = nullptr, *densest_cst = nullptr, *dst = nullptr,
+                      *loosest_dst = nullptr, *jam = nullptr;
   for (const auto& s : table.rows()) {
     if (std::abs(s.mu0 - mu0) > kBulkMu0Tolerance) continue;
     if (s.state == BulkState::Cst) {
@@ -188,7 +197,13 @@ BulkDecision decide_from_bulk(const BulkFlowTable& table, double mu0, double phi
            std::abs(s.phi_bulk - phi) < std::abs(cst->phi_bulk - phi)))
         cst = &s;
     } else if (s.state == BulkState::Dst) {
-      if (!dst || s.phi_bulk < dst->phi_bulk) dst = &s;
+      if (!loosest_dst || s.phi_bulk < loosest_dst->phi_bulk) loosest_dst = &s;
+      const double off = std::abs(s.phi_bulk - phi);
+      if (off > reach) continue;
+      if (!dst || off < std::abs(dst->phi_bulk - phi) ||
+          (off == std::abs(dst->phi_bulk - phi) &&
+           s.max_frac_unconverged < dst->max_frac_unconverged))
+        dst = &s;
     } else if (!jam || s.phi_bulk < jam->phi_bulk) {
       jam = &s;
     }
@@ -201,8 +216,8 @@ BulkDecision decide_from_bulk(const BulkFlowTable& table, double mu0, double phi
   };
   if (cst) return decide(FlowRegime::Cst, *cst);
   if (jam && phi >= jam->phi_bulk - reach) return decide(FlowRegime::NoFlow, *jam);
-  if (dst && std::abs(phi - dst->phi_bulk) <= reach) return decide(FlowRegime::Dst, *dst);
-  if (!densest_cst && !dst && !jam)
+  if (dst) return decide(FlowRegime::Dst, *dst);
+  if (!densest_cst && !loosest_dst && !jam)
     d.reason = fmt::format("no bulk flow curve at mu0 {:g} in {}", mu0, table.name());
   else if (densest_cst)
     d.reason = fmt::format(
@@ -213,7 +228,7 @@ BulkDecision decide_from_bulk(const BulkFlowTable& table, double mu0, double phi
     d.reason = fmt::format(
         "the bulk flow curves at mu0 {:g} start at phi_bulk {:.4f} ({}); phi "
         "{:g} is not within {:g} of a measured state",
-        mu0, (dst ? dst : jam)->phi_bulk, table.name(), phi, kBulkPhiTolerance);
+        mu0, (loosest_dst ? loosest_dst : jam)->phi_bulk, table.name(), phi, kBulkPhiTolerance);
   return d;
 }
 

@@ -25,7 +25,11 @@
 //     every stress, `rate_falls` (its rate fell at fall_lambda as the stress
 //     rose: a step across an S-shaped flow curve's turning point),
 //     `rate_not_increasing` or `n_above_cap`. A table without the column is
-//     read as written before these: its dst rows are jams.
+//     read as written before these: its dst rows are jams. Of several dst
+//     rows within reach, the nearest in phi answers, then the one whose
+//     worst point had the smallest share of steps at the solver's iteration
+//     cap (column max_frac_unconverged: a run of the same ramp at a higher cap
+//     measures it without the cap's bias).
 // Anything else (another mu0; phi between the densest cst row and the
 // loosest dst or jammed one, where the bulk boundary lies but is not
 // located; phi beyond a dst row) is not decided, and the caller falls back
@@ -63,13 +67,17 @@ struct BulkFlowState {
   std::size_t line = 0;     // line of the row in the table
   DstEvidence dst_evidence = DstEvidence::None;  // None: not a dst row
   double fall_lambda = 0.0;  // where the rate fell: lambda of the first point on the lower branch
+  // Largest share of a point's steps that stopped at solver.max_iterations
+  // (optional column; 0 when absent).
+  double max_frac_unconverged = 0.0;
 };
 
 class BulkFlowTable {
  public:
   // Columns mu0, phi_bulk, regime (cst, dst, jammed), max_lambda, jam_lambda,
-  // cell, source, sample, and optionally dst_evidence (empty unless dst) and
-  // fall_lambda; checked as the header comment says.
+  // cell, source, sample, and optionally dst_evidence (empty unless dst),
+  // fall_lambda and max_frac_unconverged (in [0, 1]); checked as the header
+  // comment says.
   // Throws InputError naming the file and line.
   static BulkFlowTable parse(const NumericCsv& csv);
   static BulkFlowTable read(const std::filesystem::path& file);

@@ -153,6 +153,31 @@ TEST(BulkFlowTable, BadEvidenceNamesItsLine) {
             std::string::npos);  // a jam without its lambda
 }
 
+// Each dst row decides near its own phi, not only the loosest; of two within
+// reach the nearest answers, then the one with fewer steps at the iteration
+// cap (a rerun of the same ramp at a higher cap); the share is checked.
+TEST(BulkFlowTable, TheNearestBestConvergedDstRowAnswers) {
+  const std::string header =
+      "mu0,phi_bulk,regime,max_lambda,jam_lambda,cell,source,sample,dst_evidence,fall_lambda,"
+      "max_frac_unconverged\n";
+  const auto t = table_of(
+      "0.4,0.6097,dst,316,,c,first.csv,capped,rate_falls,316,0.29\n"
+      "0.4,0.6097,dst,316,,c,rerun.csv,converged,rate_falls,316,0.00024\n"
+      "0.4,0.6099,dst,316,,c,rerun.csv,seed2,n_above_cap,316,0.00028\n"
+      "0.4,0.6200,dst,316,,c,dense.csv,dense,rate_falls,316,0\n",
+      header);
+  EXPECT_EQ(decide_from_bulk(t, 0.4, 0.6097).row.sample, "converged");
+  EXPECT_EQ(decide_from_bulk(t, 0.4, 0.6100).row.sample, "seed2");
+  const auto dense = decide_from_bulk(t, 0.4, 0.62);
+  ASSERT_EQ(dense.regime, FlowRegime::Dst) << dense.reason;
+  EXPECT_EQ(dense.row.sample, "dense");
+  EXPECT_FALSE(decide_from_bulk(t, 0.4, 0.615).regime);  // between the two: not located
+  EXPECT_EQ(t.rows()[0].max_frac_unconverged, 0.29);
+  EXPECT_NE(error_of("1,0.58,cst,100,,c,s.csv,x,,,1.5\n", header)
+                .find("b.csv:2: max_frac_unconverged 1.5: a share of steps, in [0, 1]"),
+            std::string::npos);
+}
+
 TEST(BulkFlowTable, TheBuiltInTableDecidesMu0OneAtPhi058) {
   const auto t = BulkFlowTable::builtin();
   const auto d = decide_from_bulk(t, 1.0, 0.58);

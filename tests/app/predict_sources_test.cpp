@@ -51,6 +51,25 @@ TEST(PredictSources, TheBulkFlowCurvesAnswerMu0OneAtPhi058AndSaySo) {
       << text.out;
 }
 
+// Issue 34: the decisive study's mu0 0.4 ramps at phi_bulk 0.61 fell (their
+// rate 3.97 times lower at tau 1e5 than at 1e4) and run on above: their rows
+// are the bulk table's first dst, and answer there, naming the fall.
+TEST(PredictSources, TheDecisiveRampsFallIsABulkDstAtMu0Point4) {
+  test::CliDir dir;
+  const auto j = answer(dir, {"--mu0", "0.4", "--phi", "0.61"});
+  EXPECT_EQ(j["regime"], "dst");
+  EXPECT_EQ(j["source"], "bulk flow curves");
+  EXPECT_EQ(j["bulk"]["fall_lambda"], 316.0);
+  const std::string evidence = j["bulk"]["dst_evidence"];
+  EXPECT_TRUE(evidence == "rate_falls" || evidence == "n_above_cap") << evidence;
+  EXPECT_NE(j["source_detail"].get<std::string>().find("decisive-le"), std::string::npos)
+      << j["source_detail"];
+  // Between the densest CST ramp (0.5797) and the falls (0.6097) the boundary
+  // is not located: the sediment answers.
+  const auto between = answer(dir, {"--mu0", "0.4", "--phi", "0.60"});
+  EXPECT_EQ(between["source"], "sediment table");
+}
+
 TEST(PredictSources, OutsideTheBulkTableTheSedimentAnswersAndSaysWhy) {
   test::CliDir dir;
   const auto other_mu0 = answer(dir, {"--mu0", "0.35", "--phi", "0.58"});

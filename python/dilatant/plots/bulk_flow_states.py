@@ -12,7 +12,11 @@ curve is named on stderr and left out. A curve is a sweep's `sample` (with
 its nominal phi and seed); its points are those with status `done`, in lambda.
 A curve with a point still `pending` or `failed` is a ramp not yet run to its
 end (a sweep in progress, or one whose chain broke): it is named on stderr and
-left out, since its last point says nothing of the stresses above it. A
+left out, since its last point says nothing of the stresses above it; unless
+the analysis beside it calls it `dst` by a fall it places at one of its done
+points (below): the fall is measured whatever the stresses above it do, so the
+ramp counts, up to its last done point, and stderr names it with the points
+still to run. A
 refinement (`sweep.refines`: extra stresses of another sweep's ramps, each
 started from that ramp's state) is left out as a whole: the refined ramp's own
 table decides its row.
@@ -183,11 +187,17 @@ def rows_of(flow_file):
     out = []
     for key, points in curves.items():
         sample = key[0]
-        if unfinished[key]:
-            skipped.append(f"{flow_file} {sample}: the ramp is not finished ({unfinished[key]} "
-                           "points pending or failed)")
-            continue
         analysed = dst_without_jam.get(sample)
+        if unfinished[key]:
+            fall = None if analysed is None or analysed[1] is None else fall_lambda_of(
+                points, analysed[1])
+            if fall is None:
+                skipped.append(f"{flow_file} {sample}: the ramp is not finished "
+                               f"({unfinished[key]} points pending or failed)")
+                continue
+            skipped.append(f"{flow_file} {sample}: counted though not finished: dst by "
+                           f"{analysed[0]}, its rate fell at lambda {fall:g}; "
+                           f"{unfinished[key]} points above still pending or failed")
         if analysed == ("rate_falls", None):
             skipped.append(f"{flow_file} {sample}: dst by rate_falls in an analysis without "
                            "fall_stress (older than 0.12.0): run `dilatant analyze` again")
@@ -213,7 +223,7 @@ def main(argv):
             rows += r
             skipped += s
     for s in skipped:
-        print(f"left out: {s}", file=sys.stderr)
+        print(s if "counted though not finished" in s else f"left out: {s}", file=sys.stderr)
     clashes = contradictions([row for _, row in rows])
     if clashes:
         # `dilatant predict` refuses such a table (and would then refuse every
