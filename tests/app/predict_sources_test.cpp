@@ -60,8 +60,12 @@ TEST(PredictSources, TheDecisiveRampsFallIsABulkDstAtMu0Point4) {
   EXPECT_EQ(j["regime"], "dst");
   EXPECT_EQ(j["source"], "bulk flow curves");
   EXPECT_EQ(j["bulk"]["fall_lambda"], 316.0);
+  // Flowed at every stress: the evidence is the analysis's, never a jam
+  // (which rule fires first depends on the window of points run so far).
   const std::string evidence = j["bulk"]["dst_evidence"];
-  EXPECT_TRUE(evidence == "rate_falls" || evidence == "n_above_cap") << evidence;
+  EXPECT_TRUE(evidence == "rate_falls" || evidence == "rate_not_increasing" ||
+              evidence == "n_above_cap")
+      << evidence;
   EXPECT_NE(j["source_detail"].get<std::string>().find("decisive-le"), std::string::npos)
       << j["source_detail"];
   // Between the densest CST ramp (0.5797) and the falls (0.6097) the boundary
