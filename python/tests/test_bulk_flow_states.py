@@ -92,7 +92,9 @@ def test_ramps_are_classified_and_other_cells_left_out(tmp_path, monkeypatch, ca
     # P counts up to its last done point, and stderr says it is not finished.
     assert ("le/flowcurves.csv P: counted though not finished: dst by rate_falls, its rate fell "
             "at lambda 100; 1 points above still pending or failed") in out.err
-    assert "le/flowcurves.csv Q: the ramp is not finished (1 points pending or failed)" in out.err
+    assert "left out: le/flowcurves.csv P" not in out.err  # counted, so not "left out"
+    assert "left out: le/flowcurves.csv Q: the ramp is not finished (1 points pending or failed)" \
+        in out.err
     assert "le/flowcurves.csv B: jammed at lambda 100 without a cold start" in out.err
     assert "walls/flowcurves.csv E: cell.boundary = walls" in out.err
     assert "le/flowcurves.csv F: the ramp is not finished (1 points pending or failed)" in out.err

@@ -169,8 +169,9 @@ def rows_of(flow_file):
         sweep = tomllib.load(f)
     refines = sweep.get("sweep", {}).get("refines")
     if refines:
-        return [], [f"{flow_file}: a refinement of the ramps in {refines}, whose table decides"]
-    curves, skipped = defaultdict(list), []
+        return [], [f"{flow_file}: a refinement of the ramps in {refines}, whose table decides"], []
+    # skipped: curves left out, and why; notes: curves counted, with a caveat
+    curves, skipped, notes = defaultdict(list), [], []
     unfinished = defaultdict(int)
     for r in csv.DictReader(open(flow_file)):
         key = (r["sample"], r["phi"], r.get("cell.seed", ""))
@@ -195,7 +196,7 @@ def rows_of(flow_file):
                 skipped.append(f"{flow_file} {sample}: the ramp is not finished "
                                f"({unfinished[key]} points pending or failed)")
                 continue
-            skipped.append(f"{flow_file} {sample}: counted though not finished: dst by "
+            notes.append(f"{flow_file} {sample}: counted though not finished: dst by "
                            f"{analysed[0]}, its rate fell at lambda {fall:g}; "
                            f"{unfinished[key]} points above still pending or failed")
         if analysed == ("rate_falls", None):
@@ -207,23 +208,26 @@ def rows_of(flow_file):
             out.append((float(points[0]["mu0"]), row))
         else:
             skipped.append(why)
-    return out, sorted(set(skipped))
+    return out, sorted(set(skipped)), notes
 
 
 def main(argv):
     if len(argv) < 2:
         sys.exit(__doc__)
-    rows, skipped = [], []
+    rows, skipped, notes = [], [], []
     for d in argv[1:]:
         for flow in sorted(Path(d).rglob("flowcurves.csv")):
             if not (flow.parent / "sweep.toml").exists():
                 skipped.append(f"{flow}: no sweep.toml beside it")
                 continue
-            r, s = rows_of(flow)
+            r, s, n = rows_of(flow)
             rows += r
             skipped += s
+            notes += n
     for s in skipped:
-        print(s if "counted though not finished" in s else f"left out: {s}", file=sys.stderr)
+        print(f"left out: {s}", file=sys.stderr)
+    for n in notes:
+        print(n, file=sys.stderr)
     clashes = contradictions([row for _, row in rows])
     if clashes:
         # `dilatant predict` refuses such a table (and would then refuse every
