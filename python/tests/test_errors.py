@@ -1,5 +1,7 @@
 """Bad input raises dilatant.ConfigError (a ValueError) with exactly the line
 the CLI prints after "dilatant: error: "."""
+import fcntl
+
 import pytest
 
 import dilatant
@@ -102,3 +104,22 @@ def test_output_folder_errors_are_the_built_in_os_errors(cli, tiny_file, tmp_pat
     with pytest.raises(FileExistsError):
         dilatant.phase_diagram(blocker, plots=False)
     assert issubclass(FileExistsError, OSError)
+
+
+def test_a_folder_in_use_is_a_blocking_io_error(cli, tiny_file, tmp_path):
+    """A folder whose lock another process holds (here this one, through its
+    own open file: flock locks are per open file) is refused by the CLI (exit
+    2) and by Python as BlockingIOError, with the same line; released, the run
+    completes (docs/sweeps.md "One sweep per folder")."""
+    out = tmp_path / "out"
+    out.mkdir()
+    with open(out / ".dilatant.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        expected = cli_message(cli, tiny_file, "--out", out)
+        assert expected.startswith(f"{out}: in use by another dilatant (")
+        with pytest.raises(BlockingIOError) as error:
+            dilatant.run(tiny_file, out=out)
+        assert expected in str(error.value)
+        assert not (out / "config.toml").exists()
+    dilatant.run(tiny_file, out=out)
+    assert (out / "summary.json").exists()

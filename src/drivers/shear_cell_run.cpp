@@ -11,6 +11,7 @@
 #include "drivers/shear_cell.hpp"
 #include "io/atomic_file.hpp"
 #include "io/config_compare.hpp"
+#include "io/folder_lock.hpp"
 #include "io/input_error.hpp"
 #include "io/output_folder.hpp"
 #include "io/text.hpp"
@@ -116,6 +117,9 @@ CellOutcome run_shear_cell(const Config& config, const CellRunOptions& options) 
   const auto& out = options.run.out_dir;
   const auto checkpoint = out / "checkpoint.bin";
   prepare_output_folder(out);
+  // Held to the end of the run: a second run on this folder would resume from
+  // the same checkpoint and overwrite this one's (io/folder_lock.hpp).
+  const FolderLock lock(out, "a shear-cell run");
 
   const bool resuming = options.resume && std::filesystem::exists(checkpoint);
   const bool progress = !options.run.quiet && isatty(STDERR_FILENO);

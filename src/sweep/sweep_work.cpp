@@ -9,6 +9,7 @@
 
 #include "drivers/shear_cell_run.hpp"
 #include "io/atomic_file.hpp"
+#include "io/folder_lock.hpp"
 #include "io/output_folder.hpp"
 #include "sweep/cold_start_choice.hpp"
 #include "sweep/refined_start.hpp"
@@ -52,6 +53,9 @@ std::size_t SweepWork::load_folders() {
   // refused as a whole.
   refuse_refining_into_itself(plan_, out);
   prepare_output_folder(out);
+  // One sweep per folder, held while this one lives (io/folder_lock.hpp): a
+  // second would run the same points into the same folders.
+  lock_.emplace(out, "a sweep");
   for (const auto& p : plan_.points) {
     const PointFolder f =
         inspect_point_folder(p, out / p.folder, plan_.settings.extend_unsteady_to);

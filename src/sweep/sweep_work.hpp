@@ -19,10 +19,12 @@
 #include <condition_variable>
 #include <cstddef>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "io/folder_lock.hpp"
 #include "sweep/cold_start_choice.hpp"
 #include "sweep/flow_table.hpp"
 #include "sweep/point_folder.hpp"
@@ -122,7 +124,8 @@ class SweepWork {
   std::atomic<bool> halt_;
   mutable std::mutex mutex_;
   std::condition_variable changed_;
-  SweepEvents events_;  // guarded by mutex_; active_workers is the live count
+  SweepEvents events_;              // guarded by mutex_; active_workers is the live count
+  std::optional<FolderLock> lock_;  // the sweep folder's, from load_folders on
 };
 
 }  // namespace dilatant::sweep
