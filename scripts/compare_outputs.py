@@ -11,6 +11,8 @@ Every file must be byte-identical, except
     differing lines are shown, and count only with --strict-config (a refactor
     may change how the resolved configuration is presented);
   * plots (*.png, *.pdf, *.svg): not compared (matplotlib output);
+  * .dilatant.lock (the folder's lock, empty once released; since 0.13.1):
+    not compared, so a folder of an older version compares with a newer's;
   * the two folders' own paths, where a file names them, are taken as equal.
 A file that differs only in numbers, each by at most 1e-14 relative (the last
 bits of a double), is reported as "round-off", with its largest relative
@@ -24,6 +26,7 @@ import json
 import pathlib
 import sys
 
+LOCK_FILE = ".dilatant.lock"  # src/io/folder_lock.hpp: no result, so not compared
 COST_KEYS = {
     "wall_time_s", "time_build_s", "time_detection_s", "time_solve_s", "time_measure_s",
     "time_other_s", "ns_per_contact_update", "wall_time_per_strain_s", "peak_memory_mib",
@@ -103,7 +106,7 @@ def main() -> int:
     counted, compared, rounded = 0, 0, 0
     for name in names:
         a, b = old_dir / name, new_dir / name
-        if name.suffix in SKIPPED_SUFFIXES:
+        if name.suffix in SKIPPED_SUFFIXES or name.name == LOCK_FILE:
             continue
         compared += 1
         if not a.exists() or not b.exists():

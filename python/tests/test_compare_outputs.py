@@ -33,3 +33,15 @@ def test_a_changed_byte_and_round_off_are_told_apart(tmp_path):
     (tmp_path / "new" / "timeseries.csv").write_text("t,x\n0.5,1.01\n")
     result = compare(tmp_path / "old", tmp_path / "new")
     assert result.returncode == 1, result.stdout
+
+
+def test_the_folder_lock_is_no_result(tmp_path):
+    """A newer version leaves an empty .dilatant.lock in its folders (since
+    0.13.1); an older one none. That is no difference in the results."""
+    for name in ("old", "new"):
+        (tmp_path / name).mkdir()
+        (tmp_path / name / "summary.json").write_text('{"eta": 1.0}\n')
+    (tmp_path / "new" / ".dilatant.lock").write_text("")
+    result = compare(tmp_path / "old", tmp_path / "new")
+    assert result.returncode == 0, result.stdout
+    assert "1 files compared, 0 differ" in result.stdout
