@@ -9,16 +9,15 @@
 //
 // The lock is flock(2) on FOLDER/.dilatant.lock, held for the writer's life:
 // the kernel releases it when the process ends however it ends, so a killed
-// run leaves no stale lock. The second writer is refused as bad input (exit 2)
-// in one line naming the folder and the holder:
-//     out/a: in use by another dilatant (pid 4242, a sweep, since 2026-11-29 06:40:12 UTC); wait
-//     for it or stop it
-// The file holds those words for the next one to read; it stays when the lock
-// is released (an empty lock file means nothing). In Python the refusal is a
-// BlockingIOError. Locks are per open file, so
-// two writers in one process (two Python objects on one folder) are refused
-// too. On a file system without flock (some cluster file systems answer
-// ENOLCK or EINVAL) the folder is used unlocked, as before.
+// run leaves no stale lock. The second writer is refused as bad input (exit 2;
+// in Python a BlockingIOError) in one line naming the folder and the holder:
+//     out/a: in use by another dilatant (pid 4242, a sweep, since
+//     2026-11-29 06:40:12 UTC); wait for it or stop it
+// The file holds the holder's description for the next one to read, and is
+// emptied when the lock is released (an empty lock file means nothing). Locks
+// are per open file, so two writers in one process (two Python runs on one
+// folder) are refused too. On a file system without flock (some cluster file
+// systems answer ENOLCK or EINVAL) the folder is used unlocked, as before.
 #include <cerrno>
 #include <filesystem>
 #include <string>
