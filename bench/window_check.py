@@ -43,8 +43,7 @@ def rows_of(path):
 
 def average(rows, start, end, field):
     """steady_average over start < strain <= end: (mean, error, samples)."""
-    sel = [r for r in rows if start < r[0] + 1e-12 and r[0] - 1e-12 <= end and r[1] > 0]
-    sel = [r for r in sel if r[0] - 1e-12 > start]
+    sel = [r for r in rows if start < r[0] - 1e-12 <= end and r[1] > 0]
     total = sum(r[1] for r in sel)
     if not sel:
         return math.nan, 0.0, 0
