@@ -49,3 +49,20 @@ def test_the_ramp_table_is_what_the_docs_check_reads(tmp_path):
     assert lines[4] == "| 1 | 0.4 | 100 | 1e4 | 5.32 | 1,878 ± 46 | 0.480 | 0.0286 | 0 |"
     assert lines[5] == "| 1 | 0.4 | 316 | 9.99e4 | 1e-6 | – (jammed) | 0.900 | 0.001 | 2 |"
     assert len(lines) == 6
+
+
+def test_the_ramp_table_marks_a_point_that_is_not_steady(tmp_path):
+    """A point run to the end of its strain while its rate still drifted
+    (sweep.extend_unsteady_to) keeps its row, and says it is no steady point;
+    a steady point that is not valid (contacts beyond s_lim) says that."""
+    from dilatant.plots import ramp_table
+    (tmp_path / "flowcurves.csv").write_text(
+        "cell.seed,mu0,lambda,status,shear_stress,gamma_dot,eta,eta_err,frac_bl,"
+        "inertial_number,frac_steps_unconverged,jammed,valid,steady\n"
+        "1,0.4,68.13,done,4642,4.78,971.0,21,0.384,0.0376,0,false,true,true\n"
+        "1,0.4,146.8,done,21550,1.74,12358,3226,0.702,0.0064,0.0001,false,false,false\n"
+        "1,0.4,215.4,done,46397,1.0,46397,900,0.75,0.003,0,false,false,true\n")
+    lines = ramp_table.table(tmp_path).splitlines()
+    assert lines[4].endswith("| 971.0 ± 21 | 0.384 | 0.0376 | 0 |")
+    assert "| 12,360 ± 3,200 (not steady) |" in lines[5]
+    assert "| 46,400 ± 900 (not valid) |" in lines[6]

@@ -7,6 +7,10 @@ that scripts/check-docs-tables.py checks against the CSV:
 Reads DIR/flowcurves.csv (its `done` points, in the table's order: seed, mu0,
 lambda). eta in eta_f, stress in eta_f^2/(rho_p R^2), rate in eta_f/(rho_p R^2);
 `I` the inertial number; a jammed point's eta reads "– (jammed)" (none in the CSV).
+A point the sweep marked not steady (its wall speed still drifting at the end
+of its run, `steady` false) or not valid (`valid` false: more than 5% of its
+contacts beyond s_lim, or not steady) says so after its eta: its average is
+in the table, but it is no point of a steady flow curve.
 Standard library only.
 """
 import math
@@ -51,6 +55,10 @@ def table(folder):
         rate = short(number(r["gamma_dot"]))
         eta = ("– (jammed)" if jammed else
                f"{significant(number(r['eta']), 4)} ± {significant(number(r['eta_err']), 2)}")
+        if not jammed and r.get("steady", "true") == "false":
+            eta += " (not steady)"
+        elif not jammed and r.get("valid", "true") == "false":
+            eta += " (not valid)"
         lines.append(
             f"| {r['cell.seed']} | {r['mu0']} | {r['lambda']} | {short(number(r['shear_stress']))} "
             f"| {rate} | {eta} | {number(r['frac_bl']):.3f} | "
