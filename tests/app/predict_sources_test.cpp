@@ -76,10 +76,11 @@ TEST(PredictSources, TheDecisiveRampsFallIsABulkDstAtMu0Point4) {
 
 TEST(PredictSources, OutsideTheBulkTableTheSedimentAnswersAndSaysWhy) {
   test::CliDir dir;
-  const auto other_mu0 = answer(dir, {"--mu0", "0.35", "--phi", "0.58"});
+  // mu0 0.6: a sediment row, no bulk ramp (the decisive study runs 0.01-1 without it).
+  const auto other_mu0 = answer(dir, {"--mu0", "0.6", "--phi", "0.58"});
   EXPECT_EQ(other_mu0["source"], "sediment table");
   EXPECT_TRUE(other_mu0["bulk"].is_null());
-  EXPECT_NE(other_mu0["bulk_reason"].get<std::string>().find("no bulk flow curve at mu0 0.35"),
+  EXPECT_NE(other_mu0["bulk_reason"].get<std::string>().find("no bulk flow curve at mu0 0.6"),
             std::string::npos);
   const auto denser = answer(dir, {"--mu0", "1", "--phi", "0.60"});
   EXPECT_EQ(denser["source"], "sediment table");
@@ -91,9 +92,9 @@ TEST(PredictSources, OutsideTheBulkTableTheSedimentAnswersAndSaysWhy) {
   EXPECT_EQ(none["regime"], "dst");
   EXPECT_EQ(none["source_detail"],
             "sediment table (data/jamming/phi_max_bl.csv (built in)); no bulk table used");
-  const auto text = dir.run({"predict", "--mu0", "0.35", "--phi", "0.58"});
+  const auto text = dir.run({"predict", "--mu0", "0.6", "--phi", "0.58"});
   EXPECT_NE(text.out.find("\nsource: sediment table (data/jamming/phi_max_bl.csv (built in)); bulk "
-                          "flow curves: no bulk flow curve at mu0 0.35"),
+                          "flow curves: no bulk flow curve at mu0 0.6"),
             std::string::npos)
       << text.out;
 }
