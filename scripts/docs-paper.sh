@@ -17,7 +17,7 @@
 # (default docs/paper-reproduction), DILATANT_PAPER_SWEEPS (default
 # "fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi
 # dense-window-phi dst-map dst-map-mu0 dst-map-phi dst-map-dense dst-map-seeds
-# dst-size dst-size-phi dst-map-films sc-scaling lees-edwards-fig2 lees-edwards-dst decisive-le decisive-le-mu0.4 decisive-le-mu0.4-refine decisive-le-refine decisive-le-mu0 decisive-le-mu0-far decisive-walls bulk-boundary"),
+# dst-size dst-size-phi dst-map-films sc-scaling lees-edwards-fig2 lees-edwards-dst decisive-le decisive-le-mu0.4 decisive-le-mu0.4-refine decisive-le-refine decisive-le-mu0 decisive-le-mu0.2 decisive-le-mu0-far decisive-walls bulk-boundary"),
 # DILATANT_SKIP_BUILD=1 to use build/ as it is, DILATANT=PATH to run another
 # binary (a study pinned to the version it started with: scripts/pinned-binary.sh;
 # its table is analysed by build/dilatant all the same, into OUT/SWEEP/analysis-current),
@@ -37,7 +37,7 @@ status=0
 sweeps="fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi dense-window-phi
 dst-map dst-map-mu0 dst-map-phi dst-map-dense dst-map-seeds dst-size dst-size-phi dst-map-films sc-scaling
 lees-edwards-fig2 lees-edwards-dst decisive-le decisive-le-mu0.4 decisive-le-mu0.4-refine decisive-le-refine decisive-le-mu0
-decisive-le-mu0-far decisive-walls bulk-boundary"
+decisive-le-mu0.2 decisive-le-mu0-far decisive-walls bulk-boundary"
 for sweep in ${DILATANT_PAPER_SWEEPS:-$sweeps}; do
   binary=${DILATANT:-./build/dilatant}
   # A refinement (NAME-refine.toml, sweep.refines) refines NAME's ramps in $out,
@@ -95,7 +95,7 @@ done
 if [[ -f $docs/decisive-le/flowcurves.csv ]]; then
   # The decisive study's Fig. 2: every mu0 of its sweeps in one figure.
   PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.decisive_fig2 "$docs" \
-    decisive-le decisive-le-mu0.4 decisive-le-mu0 decisive-le-mu0-far
+    decisive-le decisive-le-mu0.4 decisive-le-mu0 decisive-le-mu0.2 decisive-le-mu0-far
 fi
 # The decisive study's curves point by point (dilatant.plots.curve_pairs): do
 # two seeds agree within their error bars, does the mu0 0.4 rerun repeat the
