@@ -19,6 +19,7 @@
 # left out: no table or figure reads them.
 # `restore` writes only files that are missing from out/ (it never overwrites
 # a newer local run); `save` rewrites runs/STUDY from out/ (stale files go).
+# Both refuse (exit 2) while a sweep runs in out/paper/STUDY.
 # Environment: DILATANT_PAPER_OUT (default out/paper), DILATANT_RUNS (default
 # runs).
 set -euo pipefail
@@ -73,12 +74,27 @@ each_point() {
   done
 }
 
+# A sweep running in $out (it holds $out/.dilatant.lock, src/io/folder_lock.hpp)
+# writes checkpoints and time series while they are copied: a save could pair
+# one point's older checkpoint with its newer time series, a restore could
+# write beside a file being renamed. Refused (exit 2) naming the holder.
+refuse_if_running() {
+  local lock=$out/.dilatant.lock
+  [[ -f $lock ]] || return 0
+  if ! flock -n "$lock" true; then
+    echo "study-archive: $out: in use by $(tr -d '\n' <"$lock" || echo 'another dilatant');" \
+      "stop it first (SIGTERM: its running points checkpoint), then $action again" >&2
+    exit 2
+  fi
+}
+
 case $action in
   save)
     [[ -d $out/points ]] || {
       echo "study-archive: $out/points: no such folder (nothing has run)" >&2
       exit 2
     }
+    refuse_if_running
     rm -rf "$archive.part"
     mkdir -p "$archive.part/points"
     cp "$out/sweep.toml" "$archive.part/" 2>/dev/null || true
@@ -94,6 +110,7 @@ case $action in
       echo "study-archive: $archive/points: no such folder (nothing saved)" >&2
       exit 2
     }
+    refuse_if_running
     each_point restore_folder "$archive" "$out"
     echo "study-archive: restored $archive into $out"
     ;;

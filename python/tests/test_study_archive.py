@@ -1,6 +1,7 @@
 """scripts/study-archive.sh: a sweep saved to runs/ and restored on a bare
 machine resumes as if out/ had never gone: finished points stay done, and a
 continued point run again from a restored state gives the same bits."""
+import fcntl
 import shutil
 import signal
 import subprocess
@@ -98,6 +99,27 @@ def test_bad_use_is_exit_code_2(tmp_path):
     assert missing.returncode == 2
     assert "runs/nothing/points: no such folder" in missing.stderr
     assert archive(tmp_path, "save", study="nothing").returncode == 2
+
+
+def test_a_folder_a_sweep_runs_in_is_neither_saved_nor_restored_into(ramp, tmp_path):
+    """While a sweep holds its folder's lock (src/io/folder_lock.hpp), a save
+    could pair a point's older checkpoint with its newer time series: both
+    actions refuse, exit 2, naming the holder; released, they work."""
+    _, out, _ = ramp
+    assert archive(tmp_path, "save").returncode == 0
+    before = {p: p.read_bytes() for p in (tmp_path / "runs").rglob("*") if p.is_file()}
+    with open(out / ".dilatant.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        lock.write("pid 4242, a sweep, since 2026-11-29 16:29:11 UTC\n")
+        lock.flush()
+        for action in ("save", "restore"):
+            refused = archive(tmp_path, action)
+            assert refused.returncode == 2, refused.stderr
+            assert refused.stderr.startswith(f"study-archive: {out}: in use by pid 4242, a sweep"), \
+                refused.stderr
+            assert len(refused.stderr.splitlines()) == 1
+    assert {p: p.read_bytes() for p in (tmp_path / "runs").rglob("*") if p.is_file()} == before
+    assert archive(tmp_path, "save").returncode == 0  # the lock released: saved as before
 
 
 def test_an_interrupted_point_saved_and_restored_resumes_to_the_same_bits(cli, tmp_path):
