@@ -97,6 +97,25 @@ if [[ -f $docs/decisive-le/flowcurves.csv ]]; then
   PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.decisive_fig2 "$docs" \
     decisive-le decisive-le-mu0.4 decisive-le-mu0 decisive-le-mu0.2 decisive-le-mu0-far
 fi
+# Smooth flow or stop-and-go, point by point (docs/paper-reproduction.md "Stop
+# and go on the middle branch"): the time series of every point the study's
+# sweeps have, and four of seed 1's mu0 0.4 points across the fall drawn.
+intermittent=()
+for sweep in decisive-le-mu0.4 decisive-le-mu0.4-refine decisive-le-mu0 decisive-le-mu0.2 \
+  decisive-le-mu0-far decisive-walls; do
+  # the sweep's folder if it ran here, else its archive (runs/, gzipped series)
+  if [[ -d $out/$sweep/points ]]; then
+    intermittent+=("$out/$sweep")
+  elif [[ -d runs/$sweep/points ]]; then intermittent+=("runs/$sweep"); fi
+done
+fall=(runs/decisive-le-mu0.4-refine/points/003-seed=1_lambda=68.13
+  runs/decisive-le-mu0.4/points/006-seed=1_lambda=100
+  runs/decisive-le-mu0.4-refine/points/004-seed=1_lambda=146.8
+  runs/decisive-le-mu0.4/points/007-seed=1_lambda=316)
+if ((${#intermittent[@]})) && [[ -f ${fall[2]}/summary.json ]]; then
+  PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.rate_intermittency \
+    "$docs/rate-intermittency" "${intermittent[@]}" --figure "${fall[@]}" || status=$?
+fi
 # The decisive study's curves point by point (dilatant.plots.curve_pairs): do
 # two seeds agree within their error bars, does the mu0 0.4 rerun repeat the
 # first run (docs/paper-reproduction.md "Seeds and reruns, point by point").
