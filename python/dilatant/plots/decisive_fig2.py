@@ -1,8 +1,8 @@
 """The decisive study's Fig. 2: eta vs gamma_dot of every mu0 in the paper's
 cell at phi 0.61, drawn from the tables of its several sweeps (decisive-le's
 mu0 0.1 ramps, decisive-le-mu0.4's mu0 0.4 ramps run again at a converged
-solver cap, decisive-le-mu0's, decisive-le-mu0.2's and decisive-le-mu0-far's other mu0) into one
-figure:
+solver cap, decisive-le-mu0's, decisive-le-mu0.2's and decisive-le-mu0-far's
+other mu0) into one figure:
 
     PYTHONPATH=python python3 -m dilatant.plots.decisive_fig2 DOCS FOLDER...
 
