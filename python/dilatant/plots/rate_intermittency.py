@@ -32,10 +32,10 @@ import sys
 import tomllib
 from pathlib import Path
 
-# A quarter of the median. On the decisive study's 42 points off the falling
-# middle (smooth flow, cv 0.07-0.28, 40 or 80 intervals each;
+# A quarter of the median. On the decisive study's 60 points off the falling
+# middle (2026-11-29; 40 or 80 intervals each, cv 0.07-0.48;
 # docs/paper-reproduction.md "Stop and go on the falling middle") the slowest
-# interval is 0.50 of its median or faster: a slow one is twice below that.
+# interval is 0.40 of its median or faster (0.50 but at one point).
 SLOW_FRACTION = 0.25
 
 HEADER = ("sweep,point,seed,mu0,lambda,shear_stress,gamma_dot,steady,valid,version,intervals,"
