@@ -27,6 +27,7 @@ import csv
 import gzip
 import io
 import json
+import math
 import statistics
 import sys
 import tomllib
@@ -123,9 +124,8 @@ def draw(out, rows, figure_points):
         time, strain = read_series(folder)
         # The whole run, its transient too, each interval against the window's median.
         series = fig.add_subplot(grid[i, 0])
-        rates = [(s1 - s0) / (t1 - t0) / median
-                 for t0, t1, s0, s1 in zip(time, time[1:], strain, strain[1:])]
-        series.step(strain[1:], rates, where="pre", color="C0", lw=1)
+        whole = interval_rates(time, strain, -math.inf)
+        series.step(strain[1:], [r / median for _, r in whole], where="pre", color="C0", lw=1)
         series.axvline(config["run"]["transient_strain"], color="grey", lw=1)
         series.axhline(SLOW_FRACTION, color="grey", ls=":", lw=1)
         series.set(yscale="log", ylim=(0.05, 3), xlim=(0, None), ylabel="rate / median")
@@ -134,20 +134,22 @@ def draw(out, rows, figure_points):
                          fontsize=8)
         if i == len(figure_points) - 1:
             series.set_xlabel("strain (averaged right of the grey line; dotted: slow)")
-    for mu0 in sorted({float(r[3]) for r in rows}):
-        mine = [r for r in rows if float(r[3]) == mu0]
-        steady = [r for r in mine if r[7] == "true"]
-        unsteady = [r for r in mine if r[7] != "true"]
-        line = means.plot([float(r[5]) for r in steady], [float(r[14]) for r in steady], "o",
-                          label=f"mu0 {mu0:g}")[0]
-        if unsteady:
-            means.plot([float(r[5]) for r in unsteady], [float(r[14]) for r in unsteady], "o",
-                       mfc="none", color=line.get_color())
+    rows = [dict(zip(HEADER.split(","), r)) for r in rows]
+    for mu0 in sorted({float(r["mu0"]) for r in rows}):
+        mine = [r for r in rows if float(r["mu0"]) == mu0]
+        stress = [[float(r["shear_stress"]) for r in mine if (r["steady"] == "true") == steady]
+                  for steady in (True, False)]
+        ratio = [[float(r["time_mean_over_median"]) for r in mine
+                  if (r["steady"] == "true") == steady] for steady in (True, False)]
+        line = means.plot(stress[0], ratio[0], "o", label=f"mu0 {mu0:g}")[0]
+        if stress[1]:
+            means.plot(stress[1], ratio[1], "o", mfc="none", color=line.get_color())
     means.set(xscale="log", xlabel=r"shear stress $\tau$", ylim=(0, 1.2),
               ylabel="time-mean rate / median rate", title="every point (hollow: not steady)")
     means.legend(fontsize=7)
-    versions = sorted({r[9] for r in rows})
-    fig.suptitle(f"Stop-and-go or smooth: {len(rows)} points of {len({r[0] for r in rows})} sweeps "
+    versions = sorted({r["version"] for r in rows})
+    sweeps = len({r["sweep"] for r in rows})
+    fig.suptitle(f"Stop-and-go or smooth: {len(rows)} points of {sweeps} sweeps "
                  f"(dilatant {', '.join(versions)})", fontsize=9)
     save(fig, out, "rate_series")
 
