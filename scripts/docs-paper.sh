@@ -17,7 +17,8 @@
 # (default docs/paper-reproduction), DILATANT_PAPER_SWEEPS (default
 # "fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi
 # dense-window-phi dst-map dst-map-mu0 dst-map-phi dst-map-dense dst-map-seeds
-# dst-size dst-size-phi dst-map-films sc-scaling lees-edwards-fig2 lees-edwards-dst decisive-le decisive-le-mu0.4 decisive-le-mu0.4-refine decisive-le-refine decisive-le-mu0 decisive-le-mu0.2 decisive-le-mu0-far decisive-walls bulk-boundary"),
+# dst-size dst-size-phi dst-map-films sc-scaling lees-edwards-fig2 lees-edwards-dst decisive-le decisive-le-mu0.4 decisive-le-mu0.4-refine decisive-le-refine decisive-le-mu0 decisive-le-mu0-refine decisive-le-mu0.2
+# decisive-le-mu0.2-refine decisive-le-mu0-far decisive-walls bulk-boundary"),
 # DILATANT_SKIP_BUILD=1 to use build/ as it is, DILATANT=PATH to run another
 # binary (a study pinned to the version it started with: scripts/pinned-binary.sh;
 # its table is analysed by build/dilatant all the same, into OUT/SWEEP/analysis-current),
@@ -37,7 +38,7 @@ status=0
 sweeps="fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi dense-window-phi
 dst-map dst-map-mu0 dst-map-phi dst-map-dense dst-map-seeds dst-size dst-size-phi dst-map-films sc-scaling
 lees-edwards-fig2 lees-edwards-dst decisive-le decisive-le-mu0.4 decisive-le-mu0.4-refine decisive-le-refine decisive-le-mu0
-decisive-le-mu0.2 decisive-le-mu0-far decisive-walls bulk-boundary"
+decisive-le-mu0-refine decisive-le-mu0.2 decisive-le-mu0.2-refine decisive-le-mu0-far decisive-walls bulk-boundary"
 for sweep in ${DILATANT_PAPER_SWEEPS:-$sweeps}; do
   binary=${DILATANT:-./build/dilatant}
   # A refinement (NAME-refine.toml, sweep.refines) refines NAME's ramps in $out,
@@ -101,8 +102,8 @@ fi
 # and go on the middle branch"): the time series of every point the study's
 # sweeps have, and four of seed 1's mu0 0.4 points across the fall drawn.
 intermittent=()
-for sweep in decisive-le-mu0.4 decisive-le-mu0.4-refine decisive-le-mu0 decisive-le-mu0.2 \
-  decisive-le-mu0-far decisive-walls; do
+for sweep in decisive-le-mu0.4 decisive-le-mu0.4-refine decisive-le-mu0 decisive-le-mu0-refine \
+  decisive-le-mu0.2 decisive-le-mu0.2-refine decisive-le-mu0-far decisive-walls; do
   # the sweep's folder if it ran here, else its archive (runs/, gzipped series)
   if [[ -d $out/$sweep/points ]]; then
     intermittent+=("$out/$sweep")
