@@ -137,13 +137,12 @@ def draw(out, rows, figure_points):
     rows = [dict(zip(HEADER.split(","), r)) for r in rows]
     for mu0 in sorted({float(r["mu0"]) for r in rows}):
         mine = [r for r in rows if float(r["mu0"]) == mu0]
-        stress = [[float(r["shear_stress"]) for r in mine if (r["steady"] == "true") == steady]
-                  for steady in (True, False)]
-        ratio = [[float(r["time_mean_over_median"]) for r in mine
-                  if (r["steady"] == "true") == steady] for steady in (True, False)]
-        line = means.plot(stress[0], ratio[0], "o", label=f"mu0 {mu0:g}")[0]
-        if stress[1]:
-            means.plot(stress[1], ratio[1], "o", mfc="none", color=line.get_color())
+        steady, unsteady = ([[float(r[column]) for r in mine if (r["steady"] == "true") == flag]
+                             for column in ("shear_stress", "time_mean_over_median")]
+                            for flag in (True, False))
+        line = means.plot(*steady, "o", label=f"mu0 {mu0:g}")[0]
+        if unsteady[0]:
+            means.plot(*unsteady, "o", mfc="none", color=line.get_color())
     means.set(xscale="log", xlabel=r"shear stress $\tau$", ylim=(0, 1.2),
               ylabel="time-mean rate / median rate", title="every point (hollow: not steady)")
     means.legend(fontsize=7)
