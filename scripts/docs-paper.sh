@@ -23,6 +23,9 @@
 # binary (a study pinned to the version it started with: scripts/pinned-binary.sh;
 # its table is analysed by build/dilatant all the same, into OUT/SWEEP/analysis-current),
 # DILATANT_REFINE=PATH the binary of the *-refine sweeps (default build/dilatant).
+# DILATANT_PAPER_NO_RUN=1 runs no sweep: it copies and analyses the tables the
+# sweeps have now (a study still running writes each point's row as it ends,
+# the others `pending`) and redraws from them, in seconds.
 # A sweep with a folder in runs/ (a study kept in the repository across
 # machines, scripts/study-archive.sh) is restored from it before it runs and
 # saved to it after.
@@ -49,18 +52,22 @@ for sweep in ${DILATANT_PAPER_SWEEPS:-$sweeps}; do
     binary=${DILATANT_REFINE:-./build/dilatant}
     refines=(--set "sweep.refines=\"$(realpath -m "$out/${sweep%-refine}")\"")
   fi
-  if [[ -d runs/$sweep ]]; then DILATANT_PAPER_OUT=$out bash scripts/study-archive.sh restore "$sweep"; fi
-  # A failed point does not stop the others (exit 1): copy what there is, go on.
-  "$binary" sweep "examples/paper/$sweep.toml" --out "$out/$sweep" "${refines[@]}" "$@" ||
-    status=$?
-  if [[ -d runs/$sweep ]]; then DILATANT_PAPER_OUT=$out bash scripts/study-archive.sh save "$sweep"; fi
+  if [[ -n ${DILATANT_PAPER_NO_RUN:-} ]]; then
+    binary=none  # the table as it stands, analysed by this version (below)
+  else
+    if [[ -d runs/$sweep ]]; then DILATANT_PAPER_OUT=$out bash scripts/study-archive.sh restore "$sweep"; fi
+    # A failed point does not stop the others (exit 1): copy what there is, go on.
+    "$binary" sweep "examples/paper/$sweep.toml" --out "$out/$sweep" "${refines[@]}" "$@" ||
+      status=$?
+    if [[ -d runs/$sweep ]]; then DILATANT_PAPER_OUT=$out bash scripts/study-archive.sh save "$sweep"; fi
+  fi
   if [[ ! -f $out/$sweep/flowcurves.csv ]]; then continue; fi  # refused before it ran
   mkdir -p "$docs/$sweep"
   cp "$out/$sweep/flowcurves.csv" "$out/$sweep/sweep.toml" "$docs/$sweep/"
   if [[ $binary != ./build/dilatant && -f $docs/$sweep/flowcurves.csv ]]; then
-    # A sweep run by a pinned binary (DILATANT) is analysed by this version:
-    # the analysis reads the table alone, and its rules (fall_stress since
-    # 0.12.0) are this version's.
+    # A sweep run by a pinned binary (DILATANT), or not run here
+    # (DILATANT_PAPER_NO_RUN), is analysed by this version: the analysis reads
+    # the table alone, and its rules (fall_stress since 0.12.0) are this version's.
     ./build/dilatant analyze "$docs/$sweep/flowcurves.csv" --out "$out/$sweep/analysis-current" \
       --no-plots >/dev/null || status=$?
     cp "$out/$sweep/analysis-current/curves.csv" "$docs/$sweep/"
@@ -162,7 +169,7 @@ if [[ -f $docs/lees-edwards-fig2/flowcurves.csv || -f $docs/lees-edwards-dst/flo
   # Walls against Lees–Edwards (issue 16): table and figure in $docs/lees-edwards/.
   PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.lees_edwards "$docs"
 fi
-if [[ " ${DILATANT_PAPER_SWEEPS:-$sweeps} " == *" sc-scaling "* && -f $docs/sc-scaling/flowcurves.csv ]]; then
+if [[ -z ${DILATANT_PAPER_NO_RUN:-} && " ${DILATANT_PAPER_SWEEPS:-$sweeps} " == *" sc-scaling "* && -f $docs/sc-scaling/flowcurves.csv ]]; then
   # The s_c scaling's two ramps from saved states (docs/paper-reproduction.md
   # "The onset's s_c scaling"): s_c 5e-6 carried on from its lambda 100 state,
   # s_c 5e-4 started from the s_c 5e-5 flowing state at lambda 0.1.
