@@ -10,8 +10,15 @@ gets its mean phi_bulk,
 the regime `dilatant predict` gives there from the sediment table alone
 (`--bulk-table none`: the bulk table is read from some of these very curves, so
 it would check itself), and what the curve did: the lambda range run, whether a point
-jammed (and the first lambda that did), and eta at the highest lambda over eta
-at the lowest (thickening when > 1). Written to OUT.csv (via OUT.csv.part). A
+jammed (and the first lambda that did, and whether the sweep's cold start at
+that stress jammed too: `jam_cold_start`), the regime the flow-curve analysis
+beside the table (`curves.csv`) gives the curve (`analysis`: `dst rate_falls`,
+`cst`, ...), and eta at the highest lambda over eta at the lowest (thickening
+when > 1). `observed` sums it up: `jams` (a jam its cold start confirms),
+`jams in the ramp only` (its cold start flows), `jams without a cold start`, `dst without
+a jam` (the analysis's dst in a curve that never jammed: under imposed stress
+its rate fell, or did not rise, as the stress rose) or `flows`. Written to
+OUT.csv (via OUT.csv.part). A
 refinement's table (sweep.refines) is left out: its curves are extra points of
 another table's ramps.
 """
@@ -53,6 +60,26 @@ def curves(flow_file):
     return {k: v for k, v in groups.items() if len({r["lambda"] for r in v}) > 1}
 
 
+def analysed(flow_file):
+    """The analysis's regime of each curve of the table, keyed by its sample
+    and nominal phi (a sample may hold several phi): `dst rate_falls`, `cst`
+    ({} when the table has no curves.csv beside it)."""
+    path = flow_file.parent / "curves.csv"
+    if not path.is_file():
+        return {}
+    return {(r["sample"], float(r["phi"])):
+            " ".join(w for w in (r["regime"], r.get("dst_evidence", "")) if w)
+            for r in csv.DictReader(open(path))}
+
+
+def observed(first_jam, cold_start, analysis):
+    """What the curve did, in the words of docs/jamming.md's record."""
+    if first_jam is not None:
+        return {"jammed": "jams", "flowed": "jams in the ramp only"}.get(
+            cold_start, "jams without a cold start")
+    return "dst without a jam" if analysis.startswith("dst") else "flows"
+
+
 def main(argv):
     if len(argv) < 4:
         sys.exit(__doc__)
@@ -60,11 +87,14 @@ def main(argv):
     rows = []
     for d in argv[3:]:
         for flow in sorted(Path(d).rglob("flowcurves.csv")):
+            regimes = analysed(flow)
             for (law, mu0, phi, seed, s_c, sample), points in sorted(curves(flow).items()):
                 points.sort(key=lambda r: float(r["lambda"]))
                 fractions = [float(r["phi_bulk"]) for r in points if r["phi_bulk"]]
                 phi_bulk = sum(fractions) / len(fractions)
-                jams = [float(r["lambda"]) for r in points if r["jammed"] == "true"]
+                jams = [r for r in points if r["jammed"] == "true"]
+                first_jam = float(jams[0]["lambda"]) if jams else None
+                cold_start = jams[0].get("jam_cold_start", "") if jams else ""
                 flowing = [r for r in points if r["jammed"] != "true" and r["eta"]]
                 ratio = (float(flowing[-1]["eta"]) / float(flowing[0]["eta"])
                          if len(flowing) > 1 else "")
@@ -78,9 +108,11 @@ def main(argv):
                     "predicted": p["regime"] + (" (uncertain)" if p["uncertain"] else ""),
                     "phi_max_bl": p["phi_max_bl"],
                     "lambda_min": points[0]["lambda"], "lambda_max": points[-1]["lambda"],
-                    "first_jam_lambda": min(jams) if jams else "",
+                    "first_jam_lambda": first_jam if jams else "",
                     "eta_ratio": f"{ratio:.3g}" if ratio != "" else "",
-                    "sample": sample,
+                    "sample": sample, "jam_cold_start": cold_start,
+                    "analysis": regimes.get((sample, phi), ""),
+                    "observed": observed(first_jam, cold_start, regimes.get((sample, phi), "")),
                 })
     part = out.with_name(out.name + ".part")
     with open(part, "w", newline="") as f:
