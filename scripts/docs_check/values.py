@@ -40,7 +40,7 @@ def selected_value(marker, rows, ref):
 
 def check_value(md, marker_line, marker, paragraph, root, cache, problems):
     rows, columns = read_rows(root, marker["file"], cache)
-    for c in [c for c, _, _ in marker["where"]]:
+    for c, _, _ in marker["where"]:
         if c not in columns:
             raise Problem(f"{marker['file']} has no column '{c}'")
     ref = (marker_column(marker, columns) if marker["column"] is not None
