@@ -69,15 +69,18 @@ def run(config=None, out=None, progress=None, *, overrides=None, resume=False, s
     out         folder for the run's files (as `dilatant run --out`); None: a
                 temporary folder, read and deleted (nothing is kept)
     progress    callable(fraction) called about ten times a second with the
-                fraction of run.strain done (shear cell); returning False stops
-                the run cleanly (checkpoint written, Result.interrupted)
+                fraction done (of run.strain in a shear cell, run.time in a
+                scene, the samples of a sediment); returning False stops the
+                run cleanly (checkpoint written, Result.interrupted)
     overrides   `--set` values: ["friction.mu0=0.3"] or {"friction.mu0": 0.3}
-    resume      continue from out/checkpoint.bin (`--resume`)
+    resume      continue from out/checkpoint.bin (`--resume`; a sediment keeps
+                the samples it finished and runs the rest)
     start_from  a checkpoint to start from (`--start-from`)
 
-    The GIL is released while the engine runs; Ctrl-C stops a shear-cell run
-    after the current step, writes its checkpoint (resume it with
-    resume=True) and raises KeyboardInterrupt. Raises ConfigError on bad input.
+    The GIL is released while the engine runs; Ctrl-C stops a run after the
+    current step, writes its checkpoint (resume it with resume=True; a
+    sediment abandons the sample it was settling) and raises
+    KeyboardInterrupt. Raises ConfigError on bad input.
     """
     cfg = load_config(config, overrides)
     if resume and out is None:
@@ -89,20 +92,20 @@ def run(config=None, out=None, progress=None, *, overrides=None, resume=False, s
 
 
 def _run_in(cfg, folder, progress, resume, start_from, keep):
+    if resume and not (Path(folder) / "checkpoint.bin").exists():
+        # As the CLI: a typo in out= must not silently cost a run from scratch.
+        raise _core.ConfigError(
+            f"{folder}: resume=True found no checkpoint.bin there; check out=, or run "
+            "without resume to start anew")
     if cfg.mode == "cell":
-        if resume and not (Path(folder) / "checkpoint.bin").exists():
-            # As the CLI: a typo in out= must not silently cost a run from scratch.
-            raise _core.ConfigError(
-                f"{folder}: resume=True found no checkpoint.bin there; check out=, or run "
-                "without resume to start anew")
         outcome = _core.run_cell(cfg, folder, resume, os.fspath(start_from or ""), progress)
-    elif resume or start_from:
-        raise _core.ConfigError("resume and start_from continue a shear-cell run ([cell]); "
-                                f"a {cfg.mode} has no checkpoint")
+    elif start_from:
+        raise _core.ConfigError("start_from continues a shear-cell run ([cell]); "
+                                f"a {cfg.mode} starts from its own configuration")
     elif cfg.mode == "scene":
-        outcome = _core.run_scene(cfg, folder)
+        outcome = _core.run_scene(cfg, folder, resume, progress)
     else:
-        outcome = _core.run_sediment(cfg, folder)
+        outcome = _core.run_sediment(cfg, folder, resume, progress)
     _warn_unconverged(cfg, outcome, keep)
     result = Result(cfg, folder, outcome, keep)
     if result.summary is not None and result.summary.get("valid") is False:

@@ -75,29 +75,42 @@ py::dict run_cell(const Config& config, const std::filesystem::path& out, bool r
   return d;
 }
 
-// Scenes and sediments have no stop flag in the library: Ctrl-C is seen when
-// the run ends.
-py::dict run_scene_py(const Config& config, const std::filesystem::path& out) {
-  const SceneOutcome outcome = [&] {
-    py::gil_scoped_release release;
-    return run_scene(config, RunOptions{out, true});
-  }();
+// `progress` (may be None) gets the fraction of run.time done, whenever it
+// changed; returning False stops the run (checkpoint written).
+py::dict run_scene_py(const Config& config, const std::filesystem::path& out, bool resume,
+                      const py::object& progress) {
+  if (config.scene() == nullptr) throw InputError(config.source + ": not a scene config");
+  std::atomic<bool> stop{false};
+  std::atomic<double> fraction{0.0};
+  SceneRunOptions options{RunOptions{out, /*quiet=*/true}, resume, &stop, &fraction};
+  const auto report = progress_reporter(progress, fraction);
+  const SceneOutcome outcome =
+      run_interruptibly<SceneOutcome>([&] { return run_scene(config, options); }, stop, report);
+  if (!outcome.interrupted) report();
   py::dict d;
   d["steps"] = outcome.steps;
   d["unconverged_steps"] = outcome.unconverged_steps;
-  d["interrupted"] = false;
+  d["interrupted"] = outcome.interrupted;
   return d;
 }
 
-py::dict run_sediment_py(const Config& config, const std::filesystem::path& out) {
-  const SedimentOutcome outcome = [&] {
-    py::gil_scoped_release release;
-    return run_sediment(config, RunOptions{out, true});
-  }();
+// Ctrl-C, or False from `progress` (may be None; called with the fraction of
+// the samples finished), stops the run: the running sample is abandoned, the
+// finished ones stay in its checkpoint.
+py::dict run_sediment_py(const Config& config, const std::filesystem::path& out, bool resume,
+                         const py::object& progress) {
+  if (config.sediment() == nullptr) throw InputError(config.source + ": not a sediment config");
+  std::atomic<bool> stop{false};
+  std::atomic<double> fraction{0.0};
+  SedimentRunOptions options{RunOptions{out, /*quiet=*/true}, resume, &stop, &fraction};
+  const auto report = progress_reporter(progress, fraction);
+  const SedimentOutcome outcome = run_interruptibly<SedimentOutcome>(
+      [&] { return run_sediment(config, options); }, stop, report);
+  if (!outcome.interrupted) report();
   py::dict d;
   d["steps"] = outcome.steps;
   d["unconverged_steps"] = outcome.unconverged_steps;
-  d["interrupted"] = false;
+  d["interrupted"] = outcome.interrupted;
   d["phi_max"] = outcome.phi_max;
   d["phi_max_err"] = outcome.phi_max_err;
   d["settled"] = outcome.settled;
@@ -136,8 +149,10 @@ py::dict run_sweep_py(const sweep::SweepPlan& plan, const std::filesystem::path&
 void bind_runs(py::module_& m) {
   m.def("run_cell", &run_cell, py::arg("config"), py::arg("out"), py::arg("resume"),
         py::arg("start_from"), py::arg("progress"));
-  m.def("run_scene", &run_scene_py, py::arg("config"), py::arg("out"));
-  m.def("run_sediment", &run_sediment_py, py::arg("config"), py::arg("out"));
+  m.def("run_scene", &run_scene_py, py::arg("config"), py::arg("out"), py::arg("resume"),
+        py::arg("progress"));
+  m.def("run_sediment", &run_sediment_py, py::arg("config"), py::arg("out"), py::arg("resume"),
+        py::arg("progress"));
 
   py::class_<sweep::SweepSettings>(m, "SweepSettings")
       .def_readonly("jobs", &sweep::SweepSettings::jobs)

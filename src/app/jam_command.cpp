@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <filesystem>
 #include <iostream>
 
+#include "app/stop_request.hpp"
 #include "drivers/model_setup.hpp"
 #include "drivers/sediment_run.hpp"
 #include "io/config.hpp"
@@ -18,7 +20,8 @@ CLI::App* add_jam_command(CLI::App& app, JamCommandArgs& args) {
       "friction mu0 until it stops; the sediment's bulk fraction is the jamming fraction "
       "phi_max of that friction (docs/jamming.md). CONFIG is a TOML file with a [sediment] "
       "table; without it, the built-in one (mu0 from --set friction.mu0=...). Results go to "
-      "--out: config.toml, samples.csv, summary.json.");
+      "--out: config.toml, samples.csv, summary.json, checkpoint.bin (after every sample: "
+      "Ctrl-C keeps the samples finished, --resume runs the rest).");
   jam->add_option("config", args.config, "TOML configuration file with [sediment]")
       ->check(CLI::ExistingFile);
   jam->add_option("-o,--out", args.out, "Output folder (default: out/jam or out/<config name>)");
@@ -26,6 +29,10 @@ CLI::App* add_jam_command(CLI::App& app, JamCommandArgs& args) {
                   "Override a config key, e.g. friction.mu0=0.4, sediment.samples=5 (repeatable)")
       ->allow_extra_args(false);
   jam->add_flag("-q,--quiet", args.quiet, "No progress or final messages");
+  jam->add_flag("--resume", args.resume,
+                "Continue the run in OUT from its checkpoint.bin (same config; a larger "
+                "sediment.samples adds samples to a finished run): the samples it finished are "
+                "kept, the rest run");
   return jam;
 }
 
@@ -53,7 +60,20 @@ int execute_jam_command(const JamCommandArgs& args) {
                 (args.config.empty() ? std::string("jam")
                                      : std::filesystem::path(args.config).stem().string())
           : std::filesystem::path(args.out);
-  const SedimentOutcome outcome = run_sediment(config, options);
+  // A typo in --out must not silently cost a run from scratch.
+  if (args.resume && !std::filesystem::exists(options.out_dir / "checkpoint.bin"))
+    throw InputError(fmt::format(
+        "{}: --resume found no checkpoint.bin there; check --out, or run without --resume "
+        "to start anew",
+        options.out_dir.string()));
+  // SIGINT/SIGTERM: abandon the running sample, keep the finished ones.
+  const SedimentOutcome outcome = run_sediment(config, {options, args.resume, stop_on_interrupt()});
+  if (outcome.interrupted) {
+    std::cerr << fmt::format(
+        "dilatant: interrupted; the samples finished are in {}; continue with --resume\n",
+        (options.out_dir / "checkpoint.bin").string());
+    return 1;
+  }
   if (!args.quiet)
     std::cout << fmt::format("dilatant: {} (mu0 {}){}; results in {}\n",
                              phi_max_text(outcome, config.sediment()->samples), config.friction.mu0,

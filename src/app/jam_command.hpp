@@ -1,5 +1,5 @@
 #pragma once
-// `dilatant jam [CONFIG.toml] [--out DIR] [--set key=value ...]`: simulated
+// `dilatant jam [CONFIG.toml] [--out DIR] [--set key=value ...] [--resume]`: simulated
 // centrifugation (drivers/sediment_run.hpp), the jamming fraction phi_max of a
 // friction mu0 (the paper's phi_max_BL, its Fig. 3a and 4).
 #include <CLI/CLI.hpp>
@@ -13,6 +13,7 @@ struct JamCommandArgs {
   std::string out;
   std::vector<std::string> overrides;
   bool quiet = false;
+  bool resume = false;
 };
 
 CLI::App* add_jam_command(CLI::App& app, JamCommandArgs& args);

@@ -50,8 +50,9 @@ CLI::App* add_run_command(CLI::App& app, RunCommandArgs& args) {
   // Every configuration key, its default, range and unit, from the one table of keys.
   run->footer(config_keys_help());
   run->add_flag("--resume", args.resume,
-                "Shear cell: continue from OUT/checkpoint.bin (same config) instead of starting "
-                "anew; the result is identical to an uninterrupted run");
+                "Continue from OUT/checkpoint.bin (same config; a larger run.strain, or a scene's "
+                "run.time, extends a finished run) instead of starting anew; the result is "
+                "identical to an uninterrupted run");
   run->add_option("--start-from", args.start_from,
                   "Shear cell: start from the state in this checkpoint.bin (a run of the same "
                   "cell size), under this config, strain counted from 0 (a sweep's continuation)")
@@ -179,13 +180,11 @@ int execute_run_command(const RunCommandArgs& args) {
                                      : std::filesystem::path(args.config).stem().string())
           : std::filesystem::path(args.out);
   // A typo in --out must not silently cost a run from scratch.
-  if (args.resume && config.cell() && !std::filesystem::exists(options.out_dir / "checkpoint.bin"))
+  if (args.resume && !std::filesystem::exists(options.out_dir / "checkpoint.bin"))
     throw InputError(fmt::format(
         "{}: --resume found no checkpoint.bin there; check --out, or run without --resume "
         "to start anew",
         options.out_dir.string()));
-  if (args.resume && !config.cell())
-    throw InputError("--resume continues a shear-cell run ([cell]); a scene has no checkpoint");
   if (!args.dumps.dir.empty() && !config.cell())
     throw InputError(args.dumps.dir.string() + ": --dump-steps needs a shear-cell run ([cell])");
   if (!args.dumps.dir.empty() && !args.dumps.any())
@@ -193,7 +192,14 @@ int execute_run_command(const RunCommandArgs& args) {
                      ": --dump-steps chooses no step: give --dump-every N (N > 0) or "
                      "--dump-unconverged K (K > 0)");
   if (config.cell()) return run_cell(config, options, args.resume, args.start_from, args.dumps);
-  const SceneOutcome outcome = run_scene(config, options);
+  // SIGINT/SIGTERM: finish the step, write a checkpoint, exit cleanly.
+  const SceneOutcome outcome = run_scene(config, {options, args.resume, stop_on_interrupt()});
+  if (outcome.interrupted) {
+    std::cerr << fmt::format(
+        "dilatant: interrupted; checkpoint written to {}; continue with --resume\n",
+        (options.out_dir / "checkpoint.bin").string());
+    return 1;
+  }
   warn_if_unconverged(config, outcome.steps, outcome.unconverged_steps);
   if (!args.quiet) {
     std::cout << fmt::format("dilatant: {} steps done; results in {}\n", outcome.steps,

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "dilatant/version.hpp"
 #include "drivers/model_setup.hpp"
@@ -67,6 +68,28 @@ const StepReport& Scene::step() {
     ++whole_steps_;
   }
   return last_;
+}
+
+SceneProgress Scene::progress() const {
+  const Bodies& b = world_.bodies;
+  return SceneProgress{b.position,   b.velocity,    b.angular_velocity, world_.time,
+                       whole_steps_, rest_of_step_, statistics_,        stepper_.contact_memory()};
+}
+
+void Scene::restore(SceneProgress p) {
+  Bodies& b = world_.bodies;
+  const std::size_t n = b.size();
+  if (p.position.size() != n || p.velocity.size() != n || p.angular_velocity.size() != n)
+    throw std::runtime_error(
+        fmt::format("a state of {} bodies restored into a scene of {}", p.position.size(), n));
+  b.position = std::move(p.position);
+  b.velocity = std::move(p.velocity);
+  b.angular_velocity = std::move(p.angular_velocity);
+  world_.time = p.time;
+  whole_steps_ = p.whole_steps;
+  rest_of_step_ = p.rest_of_step;
+  statistics_ = p.statistics;
+  stepper_.restore_contact_memory(std::move(p.contact_memory));
 }
 
 nlohmann::json Scene::summary(double wall_time) const {

@@ -6,8 +6,11 @@
 //
 //     Scene scene(config);                 // reads scene.particles, picks dt
 //     while (!scene.done()) scene.step();
+#include <cstdint>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <unordered_map>
+#include <vector>
 
 #include "fluid/suspending_fluid.hpp"
 #include "io/config.hpp"
@@ -29,6 +32,20 @@ struct StepStatistics {
   void add(const StepReport& r);
 };
 
+// What a scene carries from step to step beyond its configuration: the
+// bodies' motion, the clock, the solver's contact memory (its warm start) and
+// the running totals. Restored into a scene built from the same configuration,
+// the run goes on with the bits it would have had uninterrupted
+// (drivers/scene_checkpoint.hpp writes it).
+struct SceneProgress {
+  std::vector<Vec3> position, velocity, angular_velocity;
+  double time = 0.0;
+  long whole_steps = 0;
+  double rest_of_step = 0.0;
+  StepStatistics statistics;
+  std::unordered_map<std::uint64_t, ContactMemory> contact_memory;
+};
+
 class Scene {
  public:
   // Throws InputError for a bad particles file or a trajectory_interval
@@ -46,6 +63,9 @@ class Scene {
   double dt() const { return dt_; }
   const std::vector<Contact>& contacts() const { return stepper_.contacts(); }
   const StepStatistics& statistics() const { return statistics_; }
+  SceneProgress progress() const;
+  // Throws std::runtime_error if `p` has another number of bodies.
+  void restore(SceneProgress p);
   // summary.json: run totals, solver convergence, version.
   nlohmann::json summary(double wall_time_s) const;
 

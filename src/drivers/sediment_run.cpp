@@ -4,15 +4,21 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <vector>
 
 #include "dilatant/version.hpp"
 #include "drivers/model_setup.hpp"
+#include "drivers/sediment_checkpoint.hpp"
 #include "io/atomic_file.hpp"
+#include "io/config_compare.hpp"
+#include "io/folder_lock.hpp"
+#include "io/input_error.hpp"
 #include "io/output_folder.hpp"
 #include "measure/run_cost.hpp"
 #include "measure/sample_mean.hpp"
@@ -25,16 +31,7 @@ namespace {
 // on the choice.
 constexpr double kExclusions[] = {2.0, 3.0, 4.0, 6.0};
 
-struct Sample {
-  std::int64_t seed = 0;
-  std::size_t spheres = 0;
-  bool settled = false;
-  double time = 0.0;
-  long steps = 0, unconverged = 0;
-  double max_overlap = 0.0;
-  SedimentFraction fraction;
-  std::vector<double> phi_at;  // at kExclusions
-};
+using Sample = SedimentSample;
 
 // The sediment's fraction over its samples; with one sample the error is
 // unknown: 0 here, null in summary.json.
@@ -47,7 +44,9 @@ MeanError mean_error(const std::vector<double>& x) {
   return {x.empty() ? 0.0 : m.mean, x.size() < 2 ? 0.0 : m.sem};
 }
 
-Sample run_sample(const Config& config, int index, bool progress) {
+// The sample, or nothing if `stop` was set before it settled.
+std::optional<Sample> run_sample(const Config& config, int index, bool progress,
+                                 const std::atomic<bool>* stop) {
   Sediment sediment(sediment_settings(config, index));
   Sample s;
   s.seed = config.sediment()->seed + index;
@@ -56,6 +55,10 @@ Sample run_sample(const Config& config, int index, bool progress) {
   while (!sediment.settled() && !sediment.timed_out()) {
     const StepReport& r = sediment.step();
     if (!r.solve.converged) ++s.unconverged;
+    if (stop != nullptr && stop->load()) {
+      if (progress) std::cerr << "\n";
+      return std::nullopt;
+    }
     if (progress && std::chrono::steady_clock::now() - last > std::chrono::milliseconds(500)) {
       // The mean height falls from H/2 towards the sediment's; settling ends
       // when it stops changing.
@@ -76,71 +79,34 @@ Sample run_sample(const Config& config, int index, bool progress) {
   return s;
 }
 
-}  // namespace
-
-SedimentSettings sediment_settings(const Config& config, int index) {
-  const SedimentConfig& c = *config.sediment();
-  SedimentSettings s;
-  s.lx = c.size[0];
-  s.ly = c.size[1];
-  s.height = c.size[2];
-  s.phi_initial = c.phi;
-  s.radius_min = c.radius_min;
-  s.radius_max = 1.0;
-  s.seed = c.seed + index;
-  s.mu0 = config.friction.mu0;
-  s.stokes_number = c.stokes_number;
-  s.solver = make_solver_settings(config.solver);
-  s.dt = config.solver.dt;
-  return s;
-}
-
-SedimentOutcome run_sediment(const Config& config, const RunOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  const SedimentConfig& c = *config.sediment();
-  prepare_output_folder(options.out_dir);
-  write_file_atomically(options.out_dir / "config.toml", resolved_toml(config));
-
-  std::vector<Sample> samples;
-  for (int i = 0; i < c.samples; ++i) {
-    samples.push_back(run_sample(config, i, !options.quiet && isatty(STDERR_FILENO)));
-    const Sample& s = samples.back();
-    if (!options.quiet)
-      std::cout << fmt::format(
-          "dilatant: sample {}/{} (seed {}): phi {:.4f}, surface {:.2f} R, {} after {} steps\n",
-          i + 1, c.samples, s.seed, s.fraction.phi, s.fraction.surface,
-          s.settled ? "settled" : "NOT settled", s.steps);
-  }
-
-  std::string csv = "seed,spheres,settled,time,steps,unconverged_steps,max_overlap,surface,top,phi";
-  for (double e : kExclusions) csv += fmt::format(",phi_exclusion_{:g}", e);
-  csv += "\n";
-  std::vector<double> phi;
+// The outcome over the finished samples.
+SedimentOutcome outcome_of(const std::vector<Sample>& samples) {
   SedimentOutcome out{.settled = true};
-  double max_overlap = 0.0;
+  std::vector<double> phi;
   for (const Sample& s : samples) {
-    csv += fmt::format("{},{},{},{:.10g},{},{},{:.3e},{:.6g},{:.6g},{:.6f}", s.seed, s.spheres,
-                       s.settled, s.time, s.steps, s.unconverged, s.max_overlap, s.fraction.surface,
-                       s.fraction.top, s.fraction.phi);
-    for (double p : s.phi_at) csv += fmt::format(",{:.6f}", p);
-    csv += "\n";
     phi.push_back(s.fraction.phi);
     out.settled = out.settled && s.settled;
     out.steps += s.steps;
     out.unconverged_steps += s.unconverged;
-    max_overlap = std::max(max_overlap, s.max_overlap);
   }
-  write_file_atomically(options.out_dir / "samples.csv", csv);
-
   const MeanError m = mean_error(phi);
   out.phi_max = m.mean;
   out.phi_max_err = m.error;
+  return out;
+}
+
+void write_summary(const Config& config, const std::vector<Sample>& samples,
+                   const SedimentOutcome& out, const std::filesystem::path& folder,
+                   double wall_time_s) {
+  const SedimentConfig& c = *config.sediment();
+  double max_overlap = 0.0;
+  for (const Sample& s : samples) max_overlap = std::max(max_overlap, s.max_overlap);
   nlohmann::json j;
   j["version"] = kVersion;
   j["mode"] = "sediment";
   j["mu0"] = config.friction.mu0;
-  j["phi_max"] = m.mean;
-  j["phi_max_err"] = samples.size() > 1 ? nlohmann::json(m.error) : nlohmann::json(nullptr);
+  j["phi_max"] = out.phi_max;
+  j["phi_max_err"] = samples.size() > 1 ? nlohmann::json(out.phi_max_err) : nlohmann::json(nullptr);
   std::vector<std::int64_t> seeds;
   for (const Sample& s : samples) seeds.push_back(s.seed);
   j["seeds"] = seeds;
@@ -164,9 +130,113 @@ SedimentOutcome run_sediment(const Config& config, const RunOptions& options) {
   j["steps"] = out.steps;
   j["frac_steps_unconverged"] =
       out.steps > 0 ? double(out.unconverged_steps) / double(out.steps) : 0.0;
-  j["wall_time_s"] = seconds_since(start);
-  write_file_atomically(options.out_dir / "summary.json", j.dump(2) + "\n");
+  j["wall_time_s"] = wall_time_s;
+  write_file_atomically(folder / "summary.json", j.dump(2) + "\n");
+}
+
+std::string samples_csv(const std::vector<Sample>& samples) {
+  std::string csv = "seed,spheres,settled,time,steps,unconverged_steps,max_overlap,surface,top,phi";
+  for (double e : kExclusions) csv += fmt::format(",phi_exclusion_{:g}", e);
+  csv += "\n";
+  for (const Sample& s : samples) {
+    csv += fmt::format("{},{},{},{:.10g},{},{},{:.3e},{:.6g},{:.6g},{:.6f}", s.seed, s.spheres,
+                       s.settled, s.time, s.steps, s.unconverged, s.max_overlap, s.fraction.surface,
+                       s.fraction.top, s.fraction.phi);
+    for (double p : s.phi_at) csv += fmt::format(",{:.6f}", p);
+    csv += "\n";
+  }
+  return csv;
+}
+
+// The samples a run in `out` finished, checked against this run: the
+// configuration it ran with (its config.toml; only sediment.samples may grow).
+// Anything that does not fit is bad input naming its file.
+std::vector<Sample> resumable_samples(const Config& config, const std::filesystem::path& out) {
+  static constexpr std::string_view kExtensible[] = {"sediment.samples"};
+  resumable_run_config(out, config, kExtensible, "only sediment.samples may grow");
+  std::vector<Sample> samples;
+  try {
+    samples = load_sediment_checkpoint(out / "checkpoint.bin");
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw InputError(e.what());
+  }
+  if (samples.size() > static_cast<std::size_t>(config.sediment()->samples))
+    throw InputError(fmt::format(
+        "{}: sediment.samples = {} is below the {} samples the run there finished: --resume "
+        "adds samples, it cannot remove any",
+        (out / "config.toml").string(), config.sediment()->samples, samples.size()));
+  return samples;
+}
+
+}  // namespace
+
+SedimentOutcome run_sediment(const Config& config, const SedimentRunOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const SedimentConfig& c = *config.sediment();
+  const auto& out_dir = options.run.out_dir;
+  const auto checkpoint = out_dir / "checkpoint.bin";
+  prepare_output_folder(out_dir);
+  // Held to the end of the run: a second run on this folder would resume from
+  // the same checkpoint and overwrite this one's (io/folder_lock.hpp).
+  const FolderLock lock(out_dir, "a sediment run");
+  const bool resuming = options.resume && std::filesystem::exists(checkpoint);
+  std::vector<Sample> samples;
+  if (resuming) {
+    samples = resumable_samples(config, out_dir);
+    // Nothing left to run: keep the finished run's files as they are.
+    if (samples.size() == static_cast<std::size_t>(c.samples) &&
+        std::filesystem::exists(out_dir / "summary.json"))
+      return outcome_of(samples);
+    remove_earlier_results(out_dir, {"summary.json"});
+  } else {
+    remove_earlier_results(out_dir, {"checkpoint.bin", "samples.csv", "summary.json"});
+  }
+  write_file_atomically(out_dir / "config.toml", resolved_toml(config));
+
+  const bool quiet = options.run.quiet;
+  for (int i = static_cast<int>(samples.size()); i < c.samples; ++i) {
+    std::optional<Sample> sample =
+        run_sample(config, i, !quiet && isatty(STDERR_FILENO), options.stop_requested);
+    if (!sample) {
+      SedimentOutcome stopped = outcome_of(samples);
+      stopped.interrupted = true;
+      return stopped;
+    }
+    samples.push_back(std::move(*sample));
+    // Each finished sample is kept: a stop loses at most the one running.
+    save_sediment_checkpoint(checkpoint, samples);
+    write_file_atomically(out_dir / "samples.csv", samples_csv(samples));
+    if (options.progress != nullptr)
+      options.progress->store(static_cast<double>(samples.size()) / c.samples);
+    const Sample& s = samples.back();
+    if (!quiet)
+      std::cout << fmt::format(
+          "dilatant: sample {}/{} (seed {}): phi {:.4f}, surface {:.2f} R, {} after {} steps\n",
+          i + 1, c.samples, s.seed, s.fraction.phi, s.fraction.surface,
+          s.settled ? "settled" : "NOT settled", s.steps);
+  }
+  const SedimentOutcome out = outcome_of(samples);
+  write_summary(config, samples, out, out_dir, seconds_since(start));
   return out;
+}
+
+SedimentSettings sediment_settings(const Config& config, int index) {
+  const SedimentConfig& c = *config.sediment();
+  SedimentSettings s;
+  s.lx = c.size[0];
+  s.ly = c.size[1];
+  s.height = c.size[2];
+  s.phi_initial = c.phi;
+  s.radius_min = c.radius_min;
+  s.radius_max = 1.0;
+  s.seed = c.seed + index;
+  s.mu0 = config.friction.mu0;
+  s.stokes_number = c.stokes_number;
+  s.solver = make_solver_settings(config.solver);
+  s.dt = config.solver.dt;
+  return s;
 }
 
 std::string phi_max_text(const SedimentOutcome& outcome, int samples) {

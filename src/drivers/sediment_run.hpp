@@ -2,7 +2,12 @@
 // `dilatant jam`: the sedimentation of a [sediment] config (drivers/sediment.hpp),
 // sample after sample, into OUT: config.toml (resolved), samples.csv (one row
 // per packing) and summary.json (phi_max, its error from the samples' scatter,
-// the fraction's sensitivity to the exclusion), each written whole or not at all.
+// the fraction's sensitivity to the exclusion), each written whole or not at all,
+// and checkpoint.bin (drivers/sediment_checkpoint.hpp). samples.csv and the
+// checkpoint are written after every sample: a stopped run (Ctrl-C) keeps the
+// samples it finished, and resumed, runs the rest; a finished run resumed
+// with a larger sediment.samples adds samples.
+#include <atomic>
 #include <string>
 
 #include "drivers/run_options.hpp"
@@ -20,9 +25,22 @@ struct SedimentOutcome {
   bool settled = false;      // every sample
   long steps = 0;
   long unconverged_steps = 0;
+  bool interrupted = false;  // stopped before its last sample settled
 };
 
-SedimentOutcome run_sediment(const Config& config, const RunOptions& options);
+struct SedimentRunOptions {
+  RunOptions run;
+  // Continue the run in run.out_dir from its checkpoint (none there: start
+  // anew; the CLI refuses that case first).
+  bool resume = false;
+  // Once set (Ctrl-C, Python), the running sample is abandoned and the run
+  // returns interrupted with the samples it finished.
+  const std::atomic<bool>* stop_requested = nullptr;
+  // If set, gets the fraction of sediment.samples finished after every sample.
+  std::atomic<double>* progress = nullptr;
+};
+
+SedimentOutcome run_sediment(const Config& config, const SedimentRunOptions& options);
 
 // "phi_max = 0.5612 +- 0.0040" over several samples; over one, which has no
 // error bar (summary.json has none), "phi_max = 0.5612 (one sample: no error

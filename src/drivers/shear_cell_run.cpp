@@ -14,7 +14,6 @@
 #include "io/folder_lock.hpp"
 #include "io/input_error.hpp"
 #include "io/output_folder.hpp"
-#include "io/text.hpp"
 #include "measure/run_cost.hpp"
 
 namespace dilatant {
@@ -77,22 +76,16 @@ ShearCell resumed(const Config& config, const std::filesystem::path& out) {
   const auto written = out / "config.toml";
   static constexpr std::string_view kExtensible[] = {"run.strain", "run.transient_strain"};
   bool transient_moved = false;
-  if (std::filesystem::is_regular_file(written)) {
-    const std::string text = read_input_file(written, "run's configuration");
-    if (const auto difference = config_difference(text, config, "here", kExtensible))
-      throw InputError(fmt::format(
-          "{}: the run there has another configuration ({}): resume it with the same "
-          "configuration and --set options (only run.strain may grow, and run.transient_strain "
-          "move beyond it), or choose another --out",
-          written.string(), *difference));
-    const toml::table there = toml::parse(text);
-    const double before = there["run"]["strain"].value_or(0.0);
+  if (const auto there = resumable_run_config(
+          out, config, kExtensible,
+          "only run.strain may grow, and run.transient_strain move beyond it")) {
+    const double before = (*there)["run"]["strain"].value_or(0.0);
     if (config.run.strain < before)
       throw InputError(fmt::format(
           "{}: run.strain = {} is below the run's there ({}): --resume extends a run, it cannot "
           "shorten one",
           written.string(), config.run.strain, before));
-    const double transient_before = there["run"]["transient_strain"].value_or(0.0);
+    const double transient_before = (*there)["run"]["transient_strain"].value_or(0.0);
     transient_moved = config.run.transient_strain != transient_before;
     if (transient_moved && config.run.transient_strain < before)
       throw InputError(fmt::format(

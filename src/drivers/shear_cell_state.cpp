@@ -10,6 +10,7 @@
 #include "io/atomic_file.hpp"
 #include "io/binary_archive.hpp"
 #include "io/checksum.hpp"
+#include "io/contact_memory_archive.hpp"
 #include "io/text.hpp"
 
 namespace dilatant {
@@ -27,7 +28,6 @@ namespace {
 // 2: contact memory with regime)
 constexpr std::uint64_t kMagic = 0x39544e54414c4944ULL;
 constexpr std::uint64_t kMagic8 = 0x38544e54414c4944ULL;
-constexpr std::size_t kChecksumBytes = sizeof(std::uint32_t);
 
 // One function serves both directions so the field order cannot diverge. The
 // drive is written as its record (boundary/drive_record.hpp), whose fields
@@ -103,28 +103,13 @@ std::string checkpoint_bytes(const ShearCellState& state) {
   // visit_state needs mutable access for the reader; the writer only reads.
   DriveRecord drive = state.drive->record(state.world);
   visit_state(w, const_cast<ShearCellState&>(state), drive);
-  // Contact memory (warm-start impulses and regimes), sorted by key so the file
-  // is reproducible.
-  std::vector<std::pair<std::uint64_t, ContactMemory>> memory(state.contact_memory.begin(),
-                                                              state.contact_memory.end());
-  std::sort(memory.begin(), memory.end(),
-            [](const auto& x, const auto& y) { return x.first < y.first; });
-  w.value(static_cast<std::uint64_t>(memory.size()));
-  for (const auto& [key, m] : memory) {
-    w.value(key);
-    w.value(m.impulse);
-    w.value(static_cast<std::uint8_t>(m.regime));
-  }
-  w.value(crc32_of(w.bytes()));
-  return w.bytes();
+  write_contact_memory(w, state.contact_memory);
+  std::string bytes = w.release();
+  append_crc_trailer(bytes);
+  return bytes;
 }
 
-void seal_checkpoint(std::string& bytes) {
-  if (bytes.size() < kChecksumBytes) return;
-  const std::uint32_t crc =
-      crc32_of(std::string_view(bytes).substr(0, bytes.size() - kChecksumBytes));
-  std::memcpy(bytes.data() + bytes.size() - kChecksumBytes, &crc, kChecksumBytes);
-}
+void seal_checkpoint(std::string& bytes) { reseal_crc_trailer(bytes); }
 
 ShearCellState load_checkpoint(const std::filesystem::path& file) {
   // A missing or unreadable one is named with its file (InputError).
@@ -166,22 +151,6 @@ void check_consistent(const ShearCellState& s, const DriveRecord& drive,
       fail("box");
 }
 
-// Any byte changed after writing (a disk, a copy, an editor) is refused: without
-// the check a damaged number resumed silently (4 bytes in the middle put
-// 1.08e-222 into the time series where 0.391 belonged).
-void check_checksum(const std::string& bytes, const std::filesystem::path& file) {
-  if (bytes.size() < sizeof(kMagic) + kChecksumBytes)
-    throw std::runtime_error("checkpoint is truncated");
-  const std::size_t body = bytes.size() - kChecksumBytes;
-  std::uint32_t stored = 0;
-  std::memcpy(&stored, bytes.data() + body, kChecksumBytes);
-  if (crc32_of(std::string_view(bytes.data(), body)) != stored)
-    throw std::runtime_error(fmt::format(
-        "{}: checkpoint is damaged or truncated: its CRC-32 does not match its contents (a "
-        "byte changed after it was written, or the file was cut short)",
-        file.string()));
-}
-
 }  // namespace
 
 ShearCellState read_checkpoint(std::string bytes, const std::filesystem::path& file) {
@@ -199,28 +168,14 @@ ShearCellState read_checkpoint(std::string bytes, const std::filesystem::path& f
         file.string(), static_cast<char>(magic >> 56), static_cast<char>(kMagic >> 56)));
   if (magic != kMagic && !format8)
     throw std::runtime_error(file.string() + ": not a dilatant checkpoint");
-  check_checksum(bytes, file);
+  check_crc_trailer(bytes, sizeof(kMagic), file);
   BinaryReader r(std::move(bytes));
-  r.end_before(kChecksumBytes);
+  r.end_before(kCrcTrailerBytes);
   r.value(magic);
   ShearCellState s;
   DriveRecord drive;
   visit_state(r, s, drive, format8);
-  std::uint64_t n = 0;
-  r.value(n);
-  for (std::uint64_t k = 0; k < n; ++k) {
-    std::uint64_t key = 0;
-    ContactMemory m;
-    std::uint8_t regime = 0;
-    r.value(key);
-    r.value(m.impulse);
-    r.value(regime);
-    if (regime > static_cast<std::uint8_t>(kLastRegime)) {
-      throw std::runtime_error(file.string() + ": corrupt checkpoint (contact regime)");
-    }
-    m.regime = static_cast<Regime>(regime);
-    s.contact_memory.emplace(key, m);
-  }
+  s.contact_memory = read_contact_memory(r, file);
   if (!r.at_end()) throw std::runtime_error(file.string() + ": checkpoint has trailing data");
   check_consistent(s, drive, file);
   s.drive = restore_drive(std::move(drive), s.world, s.geometry.wall_gap());

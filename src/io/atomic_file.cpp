@@ -1,5 +1,7 @@
 #include "io/atomic_file.hpp"
 
+#include <fmt/format.h>
+
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
@@ -26,6 +28,52 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
 AtomicFileWriter::AtomicFileWriter(std::filesystem::path path)
     : path_(std::move(path)), part_(part_path(path_)), out_(part_) {
   if (!out_) fail(part_, ("cannot open for writing: " + std::string(std::strerror(errno))).c_str());
+}
+
+namespace {
+// The .part file to continue, cut to `bytes`: the published file renamed back
+// if only it is there.
+std::filesystem::path part_to_continue(const std::filesystem::path& path, std::uintmax_t bytes) {
+  const std::filesystem::path part = part_path(path);
+  std::error_code ec;
+  if (!std::filesystem::exists(part, ec) && std::filesystem::exists(path, ec)) {
+    std::filesystem::rename(path, part, ec);
+    if (ec) fail(path, ("cannot rename to .part: " + ec.message()).c_str());
+  }
+  const std::uintmax_t size = std::filesystem::file_size(part, ec);
+  if (ec) fail(part, "missing: the checkpoint's run wrote it, and it is needed to continue");
+  if (size < bytes)
+    fail(part,
+         fmt::format("shorter ({} bytes) than when the checkpoint was written ({})", size, bytes)
+             .c_str());
+  std::filesystem::resize_file(part, bytes, ec);
+  if (ec) fail(part, ("cannot cut back to the checkpoint: " + ec.message()).c_str());
+  return part;
+}
+}  // namespace
+
+AtomicFileWriter::AtomicFileWriter(std::filesystem::path path, std::uintmax_t bytes)
+    : path_(std::move(path)),
+      part_(part_to_continue(path_, bytes)),
+      out_(part_, std::ios::out | std::ios::app) {
+  if (!out_) fail(part_, ("cannot open for writing: " + std::string(std::strerror(errno))).c_str());
+}
+
+std::uintmax_t AtomicFileWriter::flushed_size() {
+  out_.flush();
+  if (!out_) fail(part_, errno != 0 ? std::strerror(errno) : "write failed");
+  // The file's size, not tellp(): a stream opened to append may not know its
+  // position before its first write.
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(part_, ec);
+  if (ec) fail(part_, ec.message().c_str());
+  return size;
+}
+
+void AtomicFileWriter::keep() {
+  out_.flush();
+  out_.close();
+  committed_ = true;
 }
 
 AtomicFileWriter::~AtomicFileWriter() {

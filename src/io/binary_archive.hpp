@@ -6,12 +6,15 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "geometry/vec3.hpp"
+#include "io/text.hpp"
 
 namespace dilatant {
 
@@ -21,7 +24,7 @@ class BinaryWriter {
   void value(const T& v) {
     static_assert(std::is_trivially_copyable_v<T>);
     const auto* p = reinterpret_cast<const char*>(&v);
-    bytes_.insert(bytes_.end(), p, p + sizeof(T));
+    bytes_.append(p, sizeof(T));
   }
   void value(const Vec3& v) { value(v[0]), value(v[1]), value(v[2]); }
   // The number of elements that follow, each at least `bytes_each` long.
@@ -32,6 +35,8 @@ class BinaryWriter {
     for (const T& x : v) value(x);
   }
   const std::string& bytes() const { return bytes_; }
+  // The bytes written, moved out (the writer is empty after).
+  std::string release() { return std::move(bytes_); }
 
  private:
   std::string bytes_;
@@ -86,5 +91,20 @@ class BinaryReader {
   std::size_t trailer_ = 0;
   std::size_t pos_ = 0;
 };
+
+// Reads checkpoint `file` (InputError if missing or unreadable) and parses its
+// bytes with `parse(std::string)`; the archive's own messages ("checkpoint is
+// truncated") get the file's name in front.
+template <class Parse>
+auto parse_checkpoint_file(const std::filesystem::path& file, Parse parse) {
+  std::string bytes = read_input_file(file, "checkpoint");
+  try {
+    return parse(std::move(bytes));
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    if (what.rfind(file.string(), 0) == 0) throw;
+    throw std::runtime_error(file.string() + ": " + what);
+  }
+}
 
 }  // namespace dilatant

@@ -8,6 +8,9 @@
 #include <type_traits>
 #include <variant>
 
+#include "io/input_error.hpp"
+#include "io/text.hpp"
+
 namespace dilatant {
 namespace {
 
@@ -115,6 +118,21 @@ std::optional<std::string> config_difference(const std::string& file_text, const
   if (a.str() == b.str()) return std::nullopt;
   return first_difference(there, config.resolved, here, ignored)
       .value_or("its config.toml differs");
+}
+
+std::optional<toml::table> resumable_run_config(const std::filesystem::path& folder,
+                                                const Config& config,
+                                                std::span<const std::string_view> extensible,
+                                                std::string_view may_change) {
+  const auto written = folder / "config.toml";
+  if (!std::filesystem::is_regular_file(written)) return std::nullopt;
+  const std::string text = read_input_file(written, "run's configuration");
+  if (const auto difference = config_difference(text, config, "here", extensible))
+    throw InputError(
+        fmt::format("{}: the run there has another configuration ({}): resume it with the same "
+                    "configuration and --set options ({}), or choose another --out",
+                    written.string(), *difference, may_change));
+  return toml::parse(text);
 }
 
 }  // namespace dilatant

@@ -3,6 +3,7 @@
 // test that keeps a resume (`dilatant run --resume`, a sweep's point) from
 // continuing a state under other settings. Comment lines are ignored (they
 // name the file the configuration was read from).
+#include <filesystem>
 #include <optional>
 #include <span>
 #include <string>
@@ -24,5 +25,15 @@ const toml::node* find_dotted_key(const toml::table& resolved, std::string_view 
 std::optional<std::string> config_difference(const std::string& file_text, const Config& config,
                                              std::string_view here = "here",
                                              std::span<const std::string_view> ignored = {});
+
+// The configuration a run in `folder` ran with (its config.toml; nullopt if
+// there is none), when it is `config`'s but for the keys in `extensible`;
+// else InputError naming the file and the first difference, and telling how
+// to resume: "resume it with the same configuration and --set options
+// (`may_change`), or choose another --out".
+std::optional<toml::table> resumable_run_config(const std::filesystem::path& folder,
+                                                const Config& config,
+                                                std::span<const std::string_view> extensible,
+                                                std::string_view may_change);
 
 }  // namespace dilatant

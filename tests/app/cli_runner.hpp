@@ -16,11 +16,6 @@
 
 namespace dilatant::test {
 
-inline std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 // Single-quoted for /bin/sh.
 inline std::string shell_quote(const std::string& s) {
   std::string q = "'";

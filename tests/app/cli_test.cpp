@@ -316,7 +316,11 @@ std::vector<BadInput> bad_inputs() {
                    kParticlesCsv,
                    {"{config}", "--resume"},
                    {"--resume", "checkpoint.bin"}});
-  cases.push_back({"ResumeOfAScene", scene, kParticlesCsv, {"{config}", "--resume"}, {"--resume"}});
+  cases.push_back({"ResumeOfASceneWithoutACheckpoint",
+                   scene,
+                   kParticlesCsv,
+                   {"{config}", "--resume"},
+                   {"--resume", "checkpoint.bin"}});
   cases.push_back({"SedimentGivenToRun",
                    "[sediment]\n",
                    kParticlesCsv,

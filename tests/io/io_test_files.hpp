@@ -1,16 +1,22 @@
 #pragma once
 // Helpers for the input-layer tests: a private temporary directory to write
-// input files into, and the message of an expected InputError.
+// input files into, a file's bytes, and the message of an expected InputError.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <string>
 
 #include "io/input_error.hpp"
 
 namespace dilatant::test {
+
+inline std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
 
 class TempDir {
  public:
