@@ -18,7 +18,7 @@
 # "fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi
 # dense-window-phi dst-map dst-map-mu0 dst-map-phi dst-map-dense dst-map-seeds
 # dst-size dst-size-phi dst-map-films sc-scaling lees-edwards-fig2 lees-edwards-dst decisive-le decisive-le-mu0.4 decisive-le-mu0.4-refine decisive-le-refine decisive-le-mu0 decisive-le-mu0-refine decisive-le-mu0.2
-# decisive-le-mu0.2-refine decisive-le-mu0-far decisive-walls bulk-boundary"),
+# decisive-le-mu0.2-refine decisive-le-mu0-far decisive-walls-phi0.62 decisive-walls bulk-boundary"),
 # DILATANT_SKIP_BUILD=1 to use build/ as it is, DILATANT=PATH to run another
 # binary (a study pinned to the version it started with: scripts/pinned-binary.sh;
 # its table is analysed by build/dilatant all the same, into OUT/SWEEP/analysis-current),
@@ -41,7 +41,8 @@ status=0
 sweeps="fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi dense-window-phi
 dst-map dst-map-mu0 dst-map-phi dst-map-dense dst-map-seeds dst-size dst-size-phi dst-map-films sc-scaling
 lees-edwards-fig2 lees-edwards-dst decisive-le decisive-le-mu0.4 decisive-le-mu0.4-refine decisive-le-refine decisive-le-mu0
-decisive-le-mu0-refine decisive-le-mu0.2 decisive-le-mu0.2-refine decisive-le-mu0-far decisive-walls bulk-boundary"
+decisive-le-mu0-refine decisive-le-mu0.2 decisive-le-mu0.2-refine decisive-le-mu0-far decisive-walls-phi0.62
+decisive-walls bulk-boundary"
 for sweep in ${DILATANT_PAPER_SWEEPS:-$sweeps}; do
   binary=${DILATANT:-./build/dilatant}
   # A refinement (NAME-refine.toml, sweep.refines) refines NAME's ramps in $out,
