@@ -27,8 +27,9 @@ class SedimentCheckpoint : public ::testing::Test {
  protected:
   fs::path at(const std::string& name) const { return dir_.path() / name; }
   static Config config(int samples, double mu0 = 1.0) {
+    // 2 R excluded at floor and surface: the box's 8 R leave a slab to measure.
     return parse_config(
-        "[sediment]\nsize = [5.0, 5.0, 8.0]\n", "<test>", fs::current_path(),
+        "[sediment]\nsize = [5.0, 5.0, 8.0]\nexclusion = 2.0\n", "<test>", fs::current_path(),
         {"sediment.samples=" + std::to_string(samples), "friction.mu0=" + std::to_string(mu0)});
   }
   SedimentOutcome run(const std::string& out, const Config& c, bool resume = false,
@@ -58,6 +59,7 @@ TEST_F(SedimentCheckpoint, SamplesAddedOnResumeGiveTheUninterruptedRunsResults) 
   const SedimentOutcome grown = run("grown", config(2), /*resume=*/true);
   EXPECT_FALSE(grown.interrupted);
   EXPECT_EQ(grown.steps, whole.steps);
+  EXPECT_GT(whole.phi_max, 0.5);  // a measured fraction, not an empty slab's 0
   EXPECT_EQ(grown.phi_max, whole.phi_max);
   EXPECT_EQ(test::read_text(dir_.path() / "grown" / "samples.csv"),
             test::read_text(dir_.path() / "whole" / "samples.csv"));
