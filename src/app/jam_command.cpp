@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <filesystem>
 #include <iostream>
 
 #include "app/stop_request.hpp"
@@ -10,6 +9,7 @@
 #include "drivers/sediment_run.hpp"
 #include "io/config.hpp"
 #include "io/input_error.hpp"
+#include "io/output_folder.hpp"
 
 namespace dilatant {
 
@@ -60,12 +60,7 @@ int execute_jam_command(const JamCommandArgs& args) {
                 (args.config.empty() ? std::string("jam")
                                      : std::filesystem::path(args.config).stem().string())
           : std::filesystem::path(args.out);
-  // A typo in --out must not silently cost a run from scratch.
-  if (args.resume && !std::filesystem::exists(options.out_dir / "checkpoint.bin"))
-    throw InputError(fmt::format(
-        "{}: --resume found no checkpoint.bin there; check --out, or run without --resume "
-        "to start anew",
-        options.out_dir.string()));
+  if (args.resume) require_checkpoint_to_resume(options.out_dir);
   // SIGINT/SIGTERM: abandon the running sample, keep the finished ones.
   const SedimentOutcome outcome = run_sediment(config, {options, args.resume, stop_on_interrupt()});
   if (outcome.interrupted) {

@@ -13,6 +13,7 @@
 #include "io/config.hpp"
 #include "io/config_keys.hpp"
 #include "io/input_error.hpp"
+#include "io/output_folder.hpp"
 
 namespace dilatant {
 
@@ -179,12 +180,7 @@ int execute_run_command(const RunCommandArgs& args) {
                 (args.config.empty() ? std::string("default")
                                      : std::filesystem::path(args.config).stem().string())
           : std::filesystem::path(args.out);
-  // A typo in --out must not silently cost a run from scratch.
-  if (args.resume && !std::filesystem::exists(options.out_dir / "checkpoint.bin"))
-    throw InputError(fmt::format(
-        "{}: --resume found no checkpoint.bin there; check --out, or run without --resume "
-        "to start anew",
-        options.out_dir.string()));
+  if (args.resume) require_checkpoint_to_resume(options.out_dir);
   if (!args.dumps.dir.empty() && !config.cell())
     throw InputError(args.dumps.dir.string() + ": --dump-steps needs a shear-cell run ([cell])");
   if (!args.dumps.dir.empty() && !args.dumps.any())

@@ -25,7 +25,7 @@ struct SceneCheckpoint {
 // Written atomically (io/atomic_file.hpp).
 void save_scene_checkpoint(const std::filesystem::path& file, const SceneCheckpoint& checkpoint);
 std::string scene_checkpoint_bytes(const SceneCheckpoint& checkpoint);
-// Throw std::runtime_error naming `file` for a missing, damaged or foreign
+// Throw InputError naming `file` for a missing, damaged or foreign
 // file (a shear cell's checkpoint is named as such).
 SceneCheckpoint load_scene_checkpoint(const std::filesystem::path& file);
 SceneCheckpoint read_scene_checkpoint(std::string bytes, const std::filesystem::path& file);

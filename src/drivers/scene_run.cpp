@@ -35,8 +35,9 @@ std::uint32_t particles_crc(const Config& config) {
 
 // The checkpoint in `out`, checked against this run: the configuration it ran
 // with (its config.toml; only run.time may grow) and the particles file it was
-// built from. Anything that does not fit is bad input naming its file.
-SceneCheckpoint resumable_checkpoint(const Config& config, const std::filesystem::path& out) {
+// built from (`crc`). Anything that does not fit is bad input naming its file.
+SceneCheckpoint resumable_checkpoint(const Config& config, const std::filesystem::path& out,
+                                     std::uint32_t crc) {
   static constexpr std::string_view kExtensible[] = {"run.time"};
   if (const auto there = resumable_run_config(out, config, kExtensible, "only run.time may grow")) {
     const double before = (*there)["run"]["time"].value_or(0.0);
@@ -46,15 +47,8 @@ SceneCheckpoint resumable_checkpoint(const Config& config, const std::filesystem
           "shorten one",
           (out / "config.toml").string(), config.run.time, before));
   }
-  SceneCheckpoint checkpoint;
-  try {
-    checkpoint = load_scene_checkpoint(out / "checkpoint.bin");
-  } catch (const InputError&) {
-    throw;
-  } catch (const std::runtime_error& e) {
-    throw InputError(e.what());
-  }
-  if (checkpoint.particles_crc != particles_crc(config))
+  SceneCheckpoint checkpoint = load_scene_checkpoint(out / "checkpoint.bin");
+  if (checkpoint.particles_crc != crc)
     throw InputError(fmt::format(
         "{}: the particles file changed since the run in {} began (its CRC-32 differs): resume "
         "with the file it was built from, or run anew without --resume",
@@ -76,10 +70,10 @@ SceneOutcome run_scene(const Config& config, const SceneRunOptions& options) {
   Scene scene(config);
   const double dt = scene.dt();
   const double frame_interval = config.scene()->trajectory_interval;
-  const bool resuming = options.resume && std::filesystem::exists(checkpoint_file);
+  const std::uint32_t crc = particles_crc(config);
   std::optional<SceneCheckpoint> resumed;
-  if (resuming) {
-    resumed = resumable_checkpoint(config, out);
+  if (options.resume && std::filesystem::exists(checkpoint_file)) {
+    resumed = resumable_checkpoint(config, out, crc);
     try {
       scene.restore(std::move(resumed->progress));
     } catch (const std::runtime_error& e) {
@@ -96,7 +90,6 @@ SceneOutcome run_scene(const Config& config, const SceneRunOptions& options) {
   }
   write_file_atomically(out / "config.toml", resolved_toml(config));
 
-  const std::uint32_t crc = particles_crc(config);
   std::optional<TrajectoryWriter> trajectory;
   std::optional<AtomicFileWriter> timeseries;
   double next_frame = frame_interval;

@@ -31,7 +31,7 @@ struct SedimentSample {
 void save_sediment_checkpoint(const std::filesystem::path& file,
                               const std::vector<SedimentSample>& samples);
 std::string sediment_checkpoint_bytes(const std::vector<SedimentSample>& samples);
-// Throw std::runtime_error naming `file` for a missing, damaged or foreign file.
+// Throw InputError naming `file` for a missing, damaged or foreign file.
 std::vector<SedimentSample> load_sediment_checkpoint(const std::filesystem::path& file);
 std::vector<SedimentSample> read_sediment_checkpoint(std::string bytes,
                                                      const std::filesystem::path& file);

@@ -154,14 +154,7 @@ std::string samples_csv(const std::vector<Sample>& samples) {
 std::vector<Sample> resumable_samples(const Config& config, const std::filesystem::path& out) {
   static constexpr std::string_view kExtensible[] = {"sediment.samples"};
   resumable_run_config(out, config, kExtensible, "only sediment.samples may grow");
-  std::vector<Sample> samples;
-  try {
-    samples = load_sediment_checkpoint(out / "checkpoint.bin");
-  } catch (const InputError&) {
-    throw;
-  } catch (const std::runtime_error& e) {
-    throw InputError(e.what());
-  }
+  std::vector<Sample> samples = load_sediment_checkpoint(out / "checkpoint.bin");
   if (samples.size() > static_cast<std::size_t>(config.sediment()->samples))
     throw InputError(fmt::format(
         "{}: sediment.samples = {} is below the {} samples the run there finished: --resume "

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "geometry/vec3.hpp"
+#include "io/input_error.hpp"
 #include "io/text.hpp"
 
 namespace dilatant {
@@ -92,9 +93,10 @@ class BinaryReader {
   std::size_t pos_ = 0;
 };
 
-// Reads checkpoint `file` (InputError if missing or unreadable) and parses its
-// bytes with `parse(std::string)`; the archive's own messages ("checkpoint is
-// truncated") get the file's name in front.
+// Reads checkpoint `file` and parses its bytes with `parse(std::string)`. A
+// checkpoint read to resume from is input: whatever is wrong with it (missing,
+// unreadable, damaged, foreign) is an InputError naming the file, the
+// archive's own messages ("checkpoint is truncated") with the name in front.
 template <class Parse>
 auto parse_checkpoint_file(const std::filesystem::path& file, Parse parse) {
   std::string bytes = read_input_file(file, "checkpoint");
@@ -102,8 +104,7 @@ auto parse_checkpoint_file(const std::filesystem::path& file, Parse parse) {
     return parse(std::move(bytes));
   } catch (const std::runtime_error& e) {
     const std::string what = e.what();
-    if (what.rfind(file.string(), 0) == 0) throw;
-    throw std::runtime_error(file.string() + ": " + what);
+    throw InputError(what.rfind(file.string(), 0) == 0 ? what : file.string() + ": " + what);
   }
 }
 

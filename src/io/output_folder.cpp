@@ -17,6 +17,13 @@ namespace {
 
 }  // namespace
 
+void require_checkpoint_to_resume(const std::filesystem::path& folder) {
+  if (!std::filesystem::exists(folder / "checkpoint.bin"))
+    throw InputError(folder.string() +
+                     ": --resume found no checkpoint.bin there; check --out, or run without "
+                     "--resume to start anew");
+}
+
 void prepare_output_folder(const std::filesystem::path& folder) {
   namespace fs = std::filesystem;
   std::error_code ec;

@@ -31,6 +31,10 @@ struct OutputFolderError : InputError {
 // created in it; throws OutputFolderError when not.
 void prepare_output_folder(const std::filesystem::path& folder);
 
+// For --resume: `folder` must hold checkpoint.bin, or a typo in --out would
+// silently cost a run from scratch; InputError naming the folder when not.
+void require_checkpoint_to_resume(const std::filesystem::path& folder);
+
 // Removes from `folder` the files an earlier run left there that this run
 // would write too: the plain files named in `files`, and in each folder of
 // `series` (a folder name, then the prefixes of its numbered files, e.g.
