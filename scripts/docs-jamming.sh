@@ -35,14 +35,16 @@ if [[ -f $out/shear/flowcurves.csv ]]; then cp "$out/shear/flowcurves.csv" "$doc
 if [[ -f $out/shear-refine/flowcurves.csv ]]; then
   cp "$out/shear-refine/flowcurves.csv" "$docs/shear-refine-flowcurves.csv"
 fi
-# The tables dilatant predict compiles in: phi_max_BL(mu0), and the onsets of
-# thickening measured on the dense-window flow curves (docs/jamming.md "The
-# onset scale").
+# The tables dilatant predict compiles in: phi_max_BL(mu0), and the
+# frictional onsets measured on the decisive study's Lees-Edwards flow curves
+# (docs/jamming.md "The onset scale"; decisive-le-mu0.4 is decisive-le's
+# mu0 0.4 run again with its steps converged).
 cp "$docs/phi_max_bl.csv" data/jamming/phi_max_bl.csv
-"$bin" analyze docs/paper-reproduction/dense-window/flowcurves.csv --out "$out/onsets" --no-plots -q
-PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.onset_table --header \
-  docs/paper-reproduction/dense-window/flowcurves.csv \
-  "$out/onsets/curves.csv" literal "docs/paper-reproduction/dense-window (binary e2614d7)" \
+paper=docs/paper-reproduction
+PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.onset_table --header literal \
+  $paper/decisive-le/flowcurves.csv --rerun $paper/decisive-le-mu0.4/flowcurves.csv \
+  $paper/decisive-le-mu0.2/flowcurves.csv $paper/decisive-le-mu0/flowcurves.csv \
+  $paper/decisive-le-mu0-far/flowcurves.csv \
   > data/jamming/onsets.csv.part && mv data/jamming/onsets.csv.part data/jamming/onsets.csv
 # The flow states measured in bulk (Lees–Edwards ramps), which dilatant
 # predict asks before the sediment table (docs/jamming.md "The predictor's

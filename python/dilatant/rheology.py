@@ -117,7 +117,7 @@ def fit_wyart_cates(input, out=None, *, alpha=None, beta=None, fit_alpha=False, 
 def predict(mu0=None, phi=None, s_c=None, table=None, *, model=None, stress=None, sample=None,
             bulk_table=None):
     """The flow regime ('cst', 'dst', 'no_flow') of spheres with friction mu0
-    at volume fraction phi, with the margins and the onset scale: the dict of
+    at volume fraction phi, with the margins and the frictional onset: the dict of
     `dilatant predict --json`. The regime comes from the flow states measured
     in bulk (Lees–Edwards ramps) where they decide, else from the sediment's
     phi_max_BL(mu0); `source` says which ('bulk flow curves' or 'sediment

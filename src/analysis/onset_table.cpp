@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "dilatant/builtin_tables.hpp"
@@ -15,6 +16,7 @@ OnsetTable OnsetTable::parse(const NumericCsv& csv) {
                     c_sc = csv.column("s_c", needs), c_rate = csv.column("onset_rate", needs),
                     c_i = csv.column("inertial_number", needs),
                     c_model = csv.column("model", needs), c_source = csv.column("source", needs);
+  const auto c_seed = csv.find_column("seed");
   OnsetTable t;
   for (std::size_t r = 0; r < csv.rows(); ++r) {
     MeasuredOnset o{csv.number(r, c_mu, "mu0"),
@@ -22,6 +24,7 @@ OnsetTable OnsetTable::parse(const NumericCsv& csv) {
                     csv.number(r, c_sc, "s_c"),
                     csv.number(r, c_rate, "onset_rate"),
                     csv.number(r, c_i, "inertial_number"),
+                    c_seed ? static_cast<int>(csv.number(r, *c_seed, "seed")) : 0,
                     csv.text(r, c_model),
                     csv.text(r, c_source)};
     if (o.mu0 < 0.0 || !(o.phi_bulk > 0.0 && o.phi_bulk < 0.74) || !(o.s_c > 0.0) ||
@@ -42,20 +45,36 @@ OnsetPrediction predict_onset(const OnsetTable& table, double mu0, double phi, d
   OnsetPrediction out;
   const MeasuredOnset* best = nullptr;
   for (const auto& o : table.onsets()) {
-    if (best == nullptr) {
-      best = &o;
-      continue;
-    }
-    const double d = std::abs(o.mu0 - mu0), d_best = std::abs(best->mu0 - mu0);
-    if (d < d_best || (d == d_best && std::abs(o.phi_bulk - phi) < std::abs(best->phi_bulk - phi)))
+    const double d = std::abs(o.mu0 - mu0), d_best = best ? std::abs(best->mu0 - mu0) : 0.0;
+    if (best == nullptr || d < d_best ||
+        (d == d_best && std::abs(o.phi_bulk - phi) < std::abs(best->phi_bulk - phi)))
       best = &o;
   }
   if (best == nullptr) return out;
+  // Every seed of that state; C and I_c are averaged in log, so the rate is
+  // the geometric mean of the curves' own C I_c^2/s_c.
+  double log_c = 0.0, log_i = 0.0, phi_sum = 0.0;
+  out.rate_low = HUGE_VAL;
+  out.rate_high = 0.0;
+  for (const auto& o : table.onsets()) {
+    if (o.mu0 != best->mu0 || std::abs(o.phi_bulk - best->phi_bulk) > kOnsetSameState) continue;
+    const double c = o.onset_rate / onset_rate_scale(o.inertial_number, o.s_c);
+    const double rate = c * onset_rate_scale(o.inertial_number, s_c);
+    log_c += std::log(c);
+    log_i += std::log(o.inertial_number);
+    phi_sum += o.phi_bulk;
+    out.rate_low = std::min(out.rate_low, rate);
+    out.rate_high = std::max(out.rate_high, rate);
+    out.measured.push_back(o);
+  }
+  const double n = static_cast<double>(out.measured.size());
   out.available = true;
-  out.too_far = std::abs(best->phi_bulk - phi) > kOnsetPhiReach;
-  out.measured = *best;
-  out.prefactor = best->onset_rate / onset_rate_scale(best->inertial_number, best->s_c);
-  out.scale = onset_rate_scale(best->inertial_number, s_c);
+  out.mu0 = best->mu0;
+  out.phi_bulk = phi_sum / n;
+  out.too_far = std::abs(out.phi_bulk - phi) > kOnsetPhiReach;
+  out.prefactor = std::exp(log_c / n);
+  out.inertial_number = std::exp(log_i / n);
+  out.scale = onset_rate_scale(out.inertial_number, s_c);
   out.rate = out.prefactor * out.scale;
   return out;
 }

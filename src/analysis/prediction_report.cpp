@@ -13,19 +13,25 @@ namespace {
 
 nlohmann::json onset_json(const OnsetPrediction& o, double s_c) {
   if (!o.available || o.too_far) return nullptr;
+  nlohmann::json curves = nlohmann::json::array();
+  for (const auto& m : o.measured)
+    curves.push_back({{"mu0", m.mu0},
+                      {"phi_bulk", m.phi_bulk},
+                      {"s_c", m.s_c},
+                      {"seed", m.seed},
+                      {"onset_rate", m.onset_rate},
+                      {"inertial_number", m.inertial_number},
+                      {"model", m.model},
+                      {"source", m.source}});
   return {{"rate", o.rate},
+          {"rate_range", {o.rate_low, o.rate_high}},
           {"rate_unit", "eta_f/(rho_p R^2)"},
+          {"criterion", "frac_bl rises above its minimum (contacts leave the HD branch)"},
           {"scale_I2_over_s_c", o.scale},
           {"prefactor", o.prefactor},
-          {"inertial_number", o.measured.inertial_number},
+          {"inertial_number", o.inertial_number},
           {"s_c", s_c},
-          {"measured_at",
-           {{"mu0", o.measured.mu0},
-            {"phi_bulk", o.measured.phi_bulk},
-            {"s_c", o.measured.s_c},
-            {"onset_rate", o.measured.onset_rate},
-            {"model", o.measured.model},
-            {"source", o.measured.source}}}};
+          {"measured_at", std::move(curves)}};
 }
 
 }  // namespace
@@ -34,7 +40,7 @@ std::string onset_withheld(const OnsetPrediction& o, double phi) {
   return fmt::format(
       "the onset nearest in mu0 was measured at phi_bulk {:.3f} (mu0 {}), more than {} from phi "
       "{}; how the onset moves with phi is not measured, so none is given",
-      o.measured.phi_bulk, o.measured.mu0, kOnsetPhiReach, phi);
+      o.phi_bulk, o.mu0, kOnsetPhiReach, phi);
 }
 
 void check_prediction_input(double mu0, double phi, double s_c, const PredictArgumentNames& names) {

@@ -3,7 +3,7 @@
 // its text) and the Python module (dilatant.predict): the regime from the
 // bulk flow curves where they decide (bulk_flow_table.hpp), else from the
 // sediment's jamming table (jamming_table.hpp), with the source named; and,
-// where the suspension flows, the onset scale of thickening (onset_table.hpp).
+// where the suspension flows, the frictional onset (onset_table.hpp).
 // (A user's Wyart–Cates fit, `predict --model`, comes before both:
 // wyart_cates_prediction.hpp.)
 #include <nlohmann/json.hpp>

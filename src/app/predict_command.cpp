@@ -30,8 +30,9 @@ CLI::App* add_predict_command(CLI::App& app, PredictCommandArgs& args) {
       "Lees-Edwards box (data/jamming/bulk_flow_states.csv), at the same mu0 and phi up to a "
       "ramp that flowed (+ 0.0005); else the sediment's jamming fractions: cst when phi <= "
       "phi_max_BL(mu0), dst up to phi_RCP (the frictionless jamming fraction), no_flow above. "
-      "The answer names its source. And the onset scale of thickening, gamma_dot_c ~ C eta_f "
-      "I_c^2/(s_c rho_p R^2), with I_c and C measured on our flow curves. With --grid: the "
+      "The answer names its source. And the frictional onset, where contacts leave the "
+      "hydrodynamic branch, gamma_dot_c ~ C eta_f I_c^2/(s_c rho_p R^2), with I_c and C "
+      "measured on our flow curves (data/jamming/onsets.csv). With --grid: the "
       "phase diagram over (mu0, phi).");
   args.s_c = friction_defaults::kSc;
   auto* mu0 = p->add_option_function<double>(
@@ -203,15 +204,17 @@ int execute_predict_command(const PredictCommandArgs& args) {
                     : "");
   std::cout << fmt::format("source: {}\n", analysis::source_detail(report, table_name));
   if (onset.available && onset.too_far)
-    std::cout << fmt::format("onset of thickening: not given ({}; docs/jamming.md)\n",
+    std::cout << fmt::format("frictional onset: not given ({}; docs/jamming.md)\n",
                              analysis::onset_withheld(onset, args.phi));
   else if (onset.available)
     std::cout << fmt::format(
-        "onset of thickening: gamma_dot_c ~ C I_c^2/s_c = {:.3g} eta_f/(rho_p R^2) at s_c {:g} "
-        "(I_c {:.3g} and C {:.3g} measured at mu0 {}, phi_bulk {:.3f}, s_c {:g}, {} model; "
-        "I_c^2/s_c alone is {:.3g}; docs/jamming.md)\n",
-        onset.rate, args.s_c, onset.measured.inertial_number, onset.prefactor, onset.measured.mu0,
-        onset.measured.phi_bulk, onset.measured.s_c, onset.measured.model, onset.scale);
+        "frictional onset (contacts leave the hydrodynamic branch): gamma_dot_c ~ C I_c^2/s_c = "
+        "{:.3g} eta_f/(rho_p R^2) at s_c {:g}, {:.3g}-{:.3g} over {} curve(s) (I_c {:.3g} and C "
+        "{:.3g} measured at mu0 {}, phi_bulk {:.3f}, s_c {:g}, {} model; I_c^2/s_c alone is "
+        "{:.3g}; docs/jamming.md)\n",
+        onset.rate, args.s_c, onset.rate_low, onset.rate_high, onset.measured.size(),
+        onset.inertial_number, onset.prefactor, onset.mu0, onset.phi_bulk,
+        onset.measured.front().s_c, onset.measured.front().model, onset.scale);
   if (report.mu0_beyond_table())
     std::cout << fmt::format(
         "note: mu0 {} is beyond the table's last point ({}); its value is "

@@ -137,7 +137,7 @@ TEST(PredictCommand, NoOnsetFarFromTheMeasuredOne) {
     EXPECT_TRUE(j["onset"].is_null()) << phi;
     EXPECT_NE(j["onset_withheld"].get<std::string>().find("phi_bulk 0.610"), std::string::npos);
     const auto text = dir.run({"predict", "--mu0", "0.4", "--phi", phi});
-    EXPECT_NE(text.out.find("onset of thickening: not given"), std::string::npos) << text.out;
+    EXPECT_NE(text.out.find("frictional onset: not given"), std::string::npos) << text.out;
   }
   const auto near = dir.run({"predict", "--mu0", "0.4", "--phi", "0.6", "--json"});
   EXPECT_TRUE(nlohmann::json::parse(near.out)["onset"].is_object());
