@@ -36,15 +36,18 @@ if [[ -f $out/shear-refine/flowcurves.csv ]]; then
   cp "$out/shear-refine/flowcurves.csv" "$docs/shear-refine-flowcurves.csv"
 fi
 # The tables dilatant predict compiles in: phi_max_BL(mu0), and the
-# frictional onsets measured on the decisive study's Lees-Edwards flow curves
-# (docs/jamming.md "The onset scale"; decisive-le-mu0.4 is decisive-le's
-# mu0 0.4 run again with its steps converged).
+# frictional onsets (`dilatant analyze`'s contact onsets, docs/analysis.md
+# rule 8) of the decisive study's Lees-Edwards flow curves (docs/jamming.md
+# "The onset scale"; decisive-le-mu0.4 is decisive-le's mu0 0.4 run again
+# with its steps converged, so it replaces that curve).
 cp "$docs/phi_max_bl.csv" data/jamming/phi_max_bl.csv
-paper=docs/paper-reproduction
-PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.onset_table --header literal \
-  $paper/decisive-le/flowcurves.csv --rerun $paper/decisive-le-mu0.4/flowcurves.csv \
-  $paper/decisive-le-mu0.2/flowcurves.csv $paper/decisive-le-mu0/flowcurves.csv \
-  $paper/decisive-le-mu0-far/flowcurves.csv \
+onset_pairs=()
+for sweep in decisive-le decisive-le-mu0.4 decisive-le-mu0.2 decisive-le-mu0 decisive-le-mu0-far; do
+  "$bin" analyze "docs/paper-reproduction/$sweep/flowcurves.csv" --out "$out/onsets/$sweep" --no-plots -q
+  [[ $sweep == decisive-le-mu0.4 ]] && onset_pairs+=(--rerun)
+  onset_pairs+=("docs/paper-reproduction/$sweep/flowcurves.csv" "$out/onsets/$sweep/curves.csv")
+done
+PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.onset_table --header literal "${onset_pairs[@]}" \
   > data/jamming/onsets.csv.part && mv data/jamming/onsets.csv.part data/jamming/onsets.csv
 # The flow states measured in bulk (Lees–Edwards ramps), which dilatant
 # predict asks before the sediment table (docs/jamming.md "The predictor's

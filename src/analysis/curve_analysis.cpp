@@ -6,6 +6,7 @@
 #include <cmath>
 #include <optional>
 
+#include "analysis/contact_onset.hpp"
 #include "analysis/polynomial_fit.hpp"
 #include "analysis/student_t.hpp"
 #include "io/input_error.hpp"
@@ -253,6 +254,12 @@ std::string_view dst_evidence_name(DstEvidence e) {
 
 CurveResult analyse_curve(const FlowCurve& curve, const AnalysisSettings& s) {
   CurveResult r;
+  // Step 8, on every flowing point (frac_bl is counted, not fitted).
+  if (const auto contacts = contact_onset(curve)) {
+    r.contact_onset_stress = contacts->stress;
+    r.contact_onset_rate = contacts->rate;
+    r.frac_bl_min = contacts->frac_bl_min;
+  }
   r.in_window.assign(curve.points.size(), false);
   r.local_slope.assign(curve.points.size(), kNotFound);
   const auto is_jammed = [](const FlowPoint& p) { return p.jammed; };

@@ -50,6 +50,9 @@
 //     b = 1/(n+1) is known to within +-0.25 of Bagnold's 0.5, halfway to the
 //     Newtonian b = 1 and to a rate plateau b = 0 (bagnold_holds).
 //
+//  8. Contact onset, simulations only: where frac_bl rises for good above its
+//     minimum (contact_onset.hpp), the onset the paper's 1/s_c scaling is about.
+//
 // Local slope, per fit point k: d ln eta / d ln gamma_dot = 1/b_k - 1 with
 // b_k = d ln gamma_dot / d ln tau between its neighbouring fit points (centred
 // difference; one-sided at the ends of the curve); +inf where the rate does not
@@ -99,6 +102,11 @@ struct CurveResult {
   // fell most below the one before it, in units of their combined noise (the
   // first stress on the lower branch); else kNotFound.
   double fall_stress = kNotFound;
+  // Where the contacts leave the hydrodynamic branch (contact_onset.hpp): only
+  // for curves whose points carry frac_bl (simulations); else kNotFound.
+  double contact_onset_stress = kNotFound;
+  double contact_onset_rate = kNotFound;
+  double frac_bl_min = kNotFound;
   // CST only (else empty): does the interval of n hold 1 (Bagnold scaling)?
   std::optional<bool> bagnold;
   std::vector<bool> in_window;      // per point of the curve

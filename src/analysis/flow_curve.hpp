@@ -35,6 +35,10 @@ struct FlowPoint {
   // from the rate's (a rate-controlled sweep point: the rate is imposed, its
   // error 0, and the viscosity's comes from the stress, eta_err); 0 = not known.
   double viscosity_err = 0.0;
+  // The fraction of boundary-lubricated contacts where the source counted it
+  // (a sweep's frac_bl); NaN otherwise. Locates where the contacts leave the
+  // hydrodynamic branch (contact_onset.hpp).
+  double frac_bl = std::numeric_limits<double>::quiet_NaN();
 };
 
 // A fit window chosen by the user, in stress units of the curve.

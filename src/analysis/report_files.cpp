@@ -127,20 +127,22 @@ std::string curves_csv(const AnalysisReport& r) {
   std::string out =
       "sample,phi,eta_newtonian,onset_stress,onset_rate,n,n_low,n_high,regime,dst_evidence,"
       "fall_stress,bagnold,n_sigma,consistency,window_stress_low,window_stress_high,"
-      "window_points,window,noise,points,file,step,dropped_rows\n";
+      "window_points,window,noise,points,file,step,dropped_rows,contact_onset_stress,"
+      "contact_onset_rate,frac_bl_min\n";
   for (std::size_t i = 0; i < r.curves.size(); ++i) {
     const FlowCurve& c = r.input.curves[i];
     const CurveResult& k = r.curves[i];
     const bool fitted = k.window_points > 0;
     const char* bagnold = !k.bagnold ? "" : *k.bagnold ? "true" : "false";
     out += fmt::format(
-        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\",\"{}\",{}\n", c.sample,
-        csv(c.phi), csv(k.eta_newtonian), csv(k.onset_stress), csv(k.onset_rate), csv(k.n),
-        csv(k.n_low), csv(k.n_high), regime_name(k.regime), dst_evidence_name(k.dst_evidence),
-        csv(k.fall_stress), bagnold, csv(k.n_sigma), csv(k.consistency), csv(k.window_stress_low),
-        csv(k.window_stress_high), k.window_points,
+        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\",\"{}\",{},{},{},{}\n",
+        c.sample, csv(c.phi), csv(k.eta_newtonian), csv(k.onset_stress), csv(k.onset_rate),
+        csv(k.n), csv(k.n_low), csv(k.n_high), regime_name(k.regime),
+        dst_evidence_name(k.dst_evidence), csv(k.fall_stress), bagnold, csv(k.n_sigma),
+        csv(k.consistency), csv(k.window_stress_low), csv(k.window_stress_high), k.window_points,
         fitted ? (k.window_from_user ? "user" : "auto") : "", csv(k.noise), c.points.size(),
-        csv_text(c.source), csv_text(c.step), c.dropped_rows);
+        csv_text(c.source), csv_text(c.step), c.dropped_rows, csv(k.contact_onset_stress),
+        csv(k.contact_onset_rate), csv(k.frac_bl_min));
   }
   return out;
 }

@@ -39,6 +39,7 @@ struct Columns {
   // `dilatant sweep`: the bulk fraction the point measured (FlowPoint::phi_measured).
   std::optional<std::size_t> phi_bulk;
   std::size_t count;
+  std::optional<std::size_t> frac_bl;  // `dilatant sweep`: FlowPoint::frac_bl
 };
 
 class SweepReader {
@@ -64,7 +65,7 @@ class SweepReader {
     return Columns{*find("phi"),     *find("mu0"),    *find("shear_stress"), *find("gamma_dot"),
                    *find("valid"),   *find("jammed"), find("gamma_dot_err"), find("status"),
                    find("sample"),   find("eta"),     find("eta_err"),       find("control"),
-                   find("phi_bulk"), fields.size()};
+                   find("phi_bulk"), fields.size(),   find("frac_bl")};
   }
 
   double number(std::size_t line, const std::vector<std::string>& f, std::size_t column,
@@ -136,6 +137,11 @@ class SweepReader {
       p.phi_measured = number(line, f, *c.phi_bulk, "phi_bulk");
       if (!(p.phi_measured > 0.0 && p.phi_measured < 0.74))
         fail(line, fmt::format("column 'phi_bulk': {} must be in (0, 0.74)", p.phi_measured));
+    }
+    if (c.frac_bl && p.shear_rate > 0.0 && !f[*c.frac_bl].empty()) {
+      p.frac_bl = number(line, f, *c.frac_bl, "frac_bl");
+      if (!(p.frac_bl >= 0.0 && p.frac_bl <= 1.0))
+        fail(line, fmt::format("column 'frac_bl': {} must be in [0, 1]", p.frac_bl));
     }
     if (c.eta_err && p.shear_rate > 0.0 && !f[*c.eta_err].empty()) {
       p.viscosity_err = number(line, f, *c.eta_err, "eta_err");
