@@ -12,6 +12,8 @@
 #include "analysis/prediction_report.hpp"
 #include "analysis/rheometer_file.hpp"
 #include "analysis/wyart_cates_prediction.hpp"
+#include "drivers/scene_checkpoint.hpp"
+#include "drivers/sediment_checkpoint.hpp"
 #include "drivers/shear_cell_state.hpp"
 #include "io/config.hpp"
 #include "io/input_error.hpp"
@@ -61,20 +63,43 @@ void particles_csv(const std::uint8_t* data, std::size_t size) {
   }
 }
 
+namespace {
+
+// One checkpoint reader on the bytes: accepted, or refused with a
+// runtime_error that names the file or is one of the archive's own messages
+// ("checkpoint is truncated", ...; the load_* functions put the file's name in
+// front of those).
+template <typename Read>
+void read_or_refuse(Read read, std::string bytes, const std::string& name) {
+  try {
+    (void)read(std::move(bytes), name);
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    if (what.rfind(name, 0) != 0 && what.rfind("checkpoint is", 0) != 0) throw;
+  }
+}
+
+}  // namespace
+
 void checkpoint(const std::uint8_t* data, std::size_t size) {
   const std::string name = "fuzz-checkpoint.bin";
   // The mutated bytes with their checksum made to match again: otherwise
   // nearly every input would stop at the checksum, before the reader's checks.
+  // (All three formats end in the same CRC-32 trailer, io/checksum.hpp.)
   std::string bytes(text_of(data, size));
   seal_checkpoint(bytes);
-  try {
-    (void)read_checkpoint(std::move(bytes), name);
-  } catch (const std::runtime_error& e) {
-    // load_checkpoint() names the file in front of the archive's own messages;
-    // read_checkpoint()'s must name it or be one of those.
-    const std::string what = e.what();
-    if (what.rfind(name, 0) != 0 && what.rfind("checkpoint is", 0) != 0) throw;
-  }
+  // The same bytes to each kind of checkpoint: a shear cell's, a scene's and a
+  // sediment's; each refuses the others' by their magic, and the seeds of
+  // each (fuzz/corpus/checkpoint/) carry the mutations into its own.
+  read_or_refuse(
+      [](std::string b, const std::string& n) { return read_checkpoint(std::move(b), n); }, bytes,
+      name);
+  read_or_refuse(
+      [](std::string b, const std::string& n) { return read_scene_checkpoint(std::move(b), n); },
+      bytes, name);
+  read_or_refuse(
+      [](std::string b, const std::string& n) { return read_sediment_checkpoint(std::move(b), n); },
+      bytes, name);
 }
 
 void rheometer_file(const std::uint8_t* data, std::size_t size) {

@@ -21,7 +21,9 @@ namespace dilatant::fuzz {
 void config(const std::uint8_t* data, std::size_t size);
 // A scene's particles CSV (io/particles_csv.hpp). Refusal: InputError.
 void particles_csv(const std::uint8_t* data, std::size_t size);
-// A shear cell's checkpoint.bin (drivers/shear_cell_state.hpp). Refusal: a
+// A checkpoint.bin: the same bytes to the shear cell's reader
+// (drivers/shear_cell_state.hpp), the scene's (drivers/scene_checkpoint.hpp)
+// and the sediment's (drivers/sediment_checkpoint.hpp). Refusal: a
 // std::runtime_error whose message names the file.
 void checkpoint(const std::uint8_t* data, std::size_t size);
 // A rheometer export of one or several steps, or a plain flow-curve table

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "drivers/scene_checkpoint.hpp"
+#include "drivers/sediment_checkpoint.hpp"
 #include "fuzz_targets.hpp"
 
 namespace dilatant::corpus_replay_test {
@@ -56,6 +58,24 @@ TEST(FuzzCorpus, EveryCommittedInputIsAcceptedOrRefusedCleanly) {
     EXPECT_NO_THROW(target(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()))
         << file;
   }
+}
+
+// The checkpoint target's seeds of the scene and sediment formats are whole
+// checkpoints their own readers accept (a short `dilatant run` of the three
+// spheres of SceneCheckpoint.*, a two-sample `dilatant jam` of the 5 x 5 x 8
+// box): the fuzzer's mutations start from inside those readers, not at their
+// magic. Re-made like the shear cell's seeds when a format changes
+// (docs/reliability.md "Fuzzing").
+TEST(FuzzCorpus, SceneAndSedimentSeedsAreWholeCheckpoints) {
+  const fs::path seeds = fs::path(DILATANT_SOURCE_DIR) / "fuzz/corpus/checkpoint";
+  const auto scene =
+      read_scene_checkpoint(bytes_of(seeds / "scene-three-spheres.bin"), "scene-three-spheres.bin");
+  EXPECT_EQ(scene.progress.position.size(), 3u);
+  EXPECT_GT(scene.progress.time, 0.0);
+  EXPECT_EQ(read_sediment_checkpoint(bytes_of(seeds / "sediment-two-samples.bin"),
+                                     "sediment-two-samples.bin")
+                .size(),
+            2u);
 }
 
 // The harness itself: refusals are swallowed, the accepted seed returns.
