@@ -52,12 +52,12 @@ def test_the_transient_is_left_out_as_the_summary_leaves_it():
         ri.interval_rates([0.0, 1.0, 1.0], [0.0, 0.05, 0.1], 0.0)
 
 
-def point(folder, rates, gz, seed=1, transient=0.52):
+def point(folder, rates, gz, seed=1, transient=0.52, jammed=False):
     folder.mkdir(parents=True)
     (folder / "config.toml").write_text(
         f"[cell]\nseed = {seed}\n\n[run]\nstrain = 2.0\ntransient_strain = {transient}\n")
     summary = {"mu0": 0.4, "lambda": 146.8, "shear_stress": 21550.24, "gamma_dot": 1.74,
-               "steady": False, "valid": False, "version": "0.13.1"}
+               "steady": False, "valid": False, "version": "0.13.1", "jammed": jammed}
     (folder / "summary.json").write_text(json.dumps(summary))
     time, strain = series(rates)
     text = "t,strain,gamma_dot\n" + "".join(f"{t},{s},0\n" for t, s in zip(time, strain))
@@ -87,6 +87,16 @@ def test_the_table_reads_an_archive_and_an_output_folder_alike(tmp_path):
     assert fields["intervals"] == "29"  # the rows past strain 0.52 bound 29 intervals
     assert fields["slow_intervals"] == "2"
     assert float(fields["slow_time_share"]) == pytest.approx(1.0 / (1.0 + 27 * 0.05), rel=1e-3)
+
+
+def test_a_jammed_point_is_left_out(tmp_path):
+    # A ramp's jam stops the cell within its transient: no interval to measure.
+    point(tmp_path / "ramp/points/004-seed=1_lambda=100", [1.0] * 40, gz=False)
+    point(tmp_path / "ramp/points/005-seed=1_lambda=316", [1.0] * 2, gz=False, jammed=True)
+    done = run(tmp_path / "table", tmp_path / "ramp")
+    assert done.returncode == 0, done.stderr
+    lines = (tmp_path / "table/intermittency.csv").read_text().splitlines()
+    assert [line.split(",")[1] for line in lines[1:]] == ["004-seed=1_lambda=100"]
 
 
 def test_a_missing_sweep_folder_is_named(tmp_path):

@@ -6,7 +6,8 @@ shear rate interval by interval over the part of the run its averages use.
 
 SWEEP_DIR is a sweep's output folder (out/paper/NAME) or its archive
 (runs/NAME, timeseries gzipped): every point folder under SWEEP_DIR/points/
-with a summary.json is read. Writes OUT_DIR/intermittency.csv, one row per
+with a summary.json is read, but a jammed one (its summary's `jammed`: the
+cell stopped, there is no flow to be intermittent). Writes OUT_DIR/intermittency.csv, one row per
 point, and, with --figure, OUT_DIR/rate_series.{png,svg}: the rate against
 strain of the named points, beside every point's time-mean rate.
 
@@ -109,7 +110,9 @@ def row(sweep, folder):
 
 
 def point_folders(sweep_dir):
-    return sorted(p.parent for p in Path(sweep_dir).glob("points/*/summary.json"))
+    """The finished points that flowed (a jammed one has no rate to measure)."""
+    return sorted(p.parent for p in Path(sweep_dir).glob("points/*/summary.json")
+                  if not json.loads(p.read_text()).get("jammed", False))
 
 
 def draw(out, rows, figure_points):
