@@ -105,6 +105,9 @@ if [[ -f $docs/decisive-le/flowcurves.csv ]]; then
   # The decisive study's Fig. 2: every mu0 of its sweeps in one figure.
   PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.decisive_fig2 "$docs" \
     decisive-le decisive-le-mu0.4 decisive-le-mu0 decisive-le-mu0.2 decisive-le-mu0-far
+  # With walls and without: the wall cell's ramps beside the box's of the same mu0.
+  PYTHONPATH=python /usr/bin/python3 -m dilatant.plots.decisive_fig2 "$docs" \
+    decisive-le decisive-le-mu0.4 decisive-walls --name decisive-walls-fig2
 fi
 # Smooth flow or stop-and-go, point by point (docs/paper-reproduction.md "Stop
 # and go on the middle branch"): the time series of every point the study's

@@ -40,6 +40,23 @@ def test_every_folder_is_drawn_and_a_repeated_curve_names_its_source(tmp_path):
         r"$\mu_0$ = 0.4 (seed=2), $\phi$ = 0.61"]
 
 
+def test_the_wall_cell_beside_the_box_is_told_apart_by_folder(tmp_path):
+    # The same sample at another nominal phi (the wall cell's 0.615) is the
+    # same ramp in another cell: drawn from each folder, each label naming it.
+    folder(tmp_path, "le", None, [
+        "mu0=0.1 seed=1,0.61,0.1,1,done,false,true,0.02,55,2,1,0.8.0,points/a"])
+    folder(tmp_path, "walls", None, [
+        "mu0=0.1 seed=1,0.615,0.1,1,done,false,true,0.016,62,3,1,0.13.1,points/a",
+        "mu0=0.4 seed=1,0.615,0.4,1,done,false,true,0.01,103,6,1,0.13.1,points/b"])
+    decisive_fig2.main(["decisive_fig2", str(tmp_path), "le", "walls", "--name", "walls-fig2"])
+    assert (tmp_path / "walls-fig2.png").is_file()
+    assert not (tmp_path / "decisive-fig2.png").exists()
+    assert decisive_fig2.draw(tmp_path, ["le", "walls"], "again") == [
+        r"$\mu_0$ = 0.1 (seed=1), $\phi$ = 0.61 [le, cap 1000]",
+        r"$\mu_0$ = 0.1 (seed=1), $\phi$ = 0.615 [walls, cap 1000]",
+        r"$\mu_0$ = 0.4 (seed=1), $\phi$ = 0.615"]
+
+
 def test_nothing_finished_is_nothing_to_plot(tmp_path):
     with pytest.raises(NothingToPlot, match="no finished point"):
         decisive_fig2.draw(tmp_path, ["le"])

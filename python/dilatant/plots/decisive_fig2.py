@@ -4,15 +4,17 @@ mu0 0.1 ramps, decisive-le-mu0.4's mu0 0.4 ramps run again at a converged
 solver cap, decisive-le-mu0's, decisive-le-mu0.2's and decisive-le-mu0-far's
 other mu0) into one figure:
 
-    PYTHONPATH=python python3 -m dilatant.plots.decisive_fig2 DOCS FOLDER...
+    PYTHONPATH=python python3 -m dilatant.plots.decisive_fig2 DOCS FOLDER... [--name NAME]
 
 reads DOCS/FOLDER/flowcurves.csv (its finished points), DOCS/FOLDER/curves.csv
 (the regimes) and DOCS/FOLDER/sweep.toml (the solver's cap) for each FOLDER
-that has them, and writes DOCS/decisive-fig2.{png,svg}. Colour is mu0, marker
-the seed; a curve (sample and phi) found in more than one folder is drawn from
-each, with a marker of its folder's and a label naming the folder and cap
-(decisive-le's first mu0 0.4 run at the cap of 1000 beside the converged
-rerun: docs/paper-reproduction.md "The decisive study"). The caption names every folder with its versions and cap.
+that has them, and writes DOCS/NAME.{png,svg} (NAME: decisive-fig2). Colour is
+mu0, marker the seed; a sample (mu0 and seed) found in more than one folder
+is drawn from each, with a marker of its folder's and a label naming the
+folder and cap: decisive-le's first mu0 0.4 run at the cap of 1000 beside the
+converged rerun (docs/paper-reproduction.md "The decisive study"), or the
+wall cell's ramp (decisive-walls, nominal phi 0.615) beside the Lees-Edwards
+box's of the same mu0 and seed ("The wall cell"). The caption names every folder with its versions and cap.
 Files are written to NAME.part and renamed, like every result file.
 """
 import sys
@@ -58,48 +60,59 @@ def seed_of(curve):
     return 1
 
 
-def draw(docs, folders):
-    """The figure into DOCS/decisive-fig2.*; returns the curves' labels."""
+def draw(docs, folders, name="decisive-fig2", title=None):
+    """The figure into DOCS/NAME.*; returns the curves' labels."""
     docs = Path(docs)
     drawn, sources = [], []
-    for name in folders:
-        curves, cap, versions = folder_curves(docs / name)
+    for folder in folders:
+        curves, cap, versions = folder_curves(docs / folder)
         if curves:
-            drawn += [(name, cap, c) for c in curves]
-            sources.append(f"{name} (cap {cap}; dilatant {'+'.join(sorted(versions))})")
+            drawn += [(folder, cap, c) for c in curves]
+            sources.append(f"{folder} (cap {cap}; dilatant {'+'.join(sorted(versions))})")
     if not drawn:
         raise NothingToPlot(f"no finished point in {', '.join(folders)} under {docs}")
     fig, ax = plt.subplots(figsize=(6.8, 5.0), constrained_layout=True)
     mu0s = sorted({c.mu0 for _, _, c in drawn})
     seeds = sorted({seed_of(c) for _, _, c in drawn})
     cmap = matplotlib.colormaps["viridis"]
-    repeated = {(c.sample, c.phi) for _, _, c in drawn
-                if sum((d.sample, d.phi) == (c.sample, c.phi) for _, _, d in drawn) > 1}
+    repeated = {c.sample for _, _, c in drawn
+                if sum(d.sample == c.sample for _, _, d in drawn) > 1}
     labels = []
-    for name, cap, c in sorted(drawn, key=lambda item: (item[2].mu0, seed_of(item[2]), item[0])):
+    for folder, cap, c in sorted(drawn, key=lambda item: (item[2].mu0, seed_of(item[2]),
+                                                          folders.index(item[0]))):
         colour = cmap(0.85 * mu0s.index(c.mu0) / max(len(mu0s) - 1, 1))
         # A repeated curve's marker also follows its folder, so the two stay apart.
-        shift = len(seeds) * folders.index(name) if (c.sample, c.phi) in repeated else 0
+        shift = len(seeds) * folders.index(folder) if c.sample in repeated else 0
         marker = MARKERS[(seeds.index(seed_of(c)) + shift) % len(MARKERS)]
-        label = c.label() + (f" [{name}, cap {cap}]" if (c.sample, c.phi) in repeated else "")
+        label = c.label() + (f" [{folder}, cap {cap}]" if c.sample in repeated else "")
         draw_curve(ax, c, colour, marker, label)
         labels.append(label)
     bagnold_guide(ax, [c for _, _, c in drawn])
     log_axes(ax)
     ax.legend(fontsize=6, loc="best")
-    ax.set_title("The decisive study: viscosity vs shear rate per $\\mu_0$ "
+    ax.set_title(title or "The decisive study: viscosity vs shear rate per $\\mu_0$ "
                  "(paper Fig. 2, its cell)", fontsize=10)
     caption(fig, "sources: " + "; ".join(sources) + "\n" + VALIDITY_NOTE +
             "\narrow: the cell jams at the stresses above its curve's last flowing point")
-    save(fig, docs, "decisive-fig2")
+    save(fig, docs, name)
     return labels
 
 
 def main(argv):
-    if len(argv) < 3:
+    args = argv[1:]
+    name = "decisive-fig2"
+    if "--name" in args:
+        at = args.index("--name")
+        if at + 1 >= len(args):
+            sys.exit(__doc__)
+        name, args = args[at + 1], args[:at] + args[at + 2:]
+    if len(args) < 2:
         sys.exit(__doc__)
+    title = None
+    if name != "decisive-fig2":
+        title = "The decisive study: with walls and without (paper Fig. 2, its cell)"
     try:
-        draw(argv[1], argv[2:])
+        draw(args[0], args[1:], name, title)
     except NothingToPlot as e:
         print(e, file=sys.stderr)
         sys.exit(4)
