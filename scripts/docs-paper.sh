@@ -18,7 +18,8 @@
 # "fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-phi
 # dense-window-phi dst-map dst-map-mu0 dst-map-phi dst-map-dense dst-map-seeds
 # dst-size dst-size-phi dst-map-films sc-scaling lees-edwards-fig2 lees-edwards-dst decisive-le decisive-le-mu0.4 decisive-le-mu0.4-refine decisive-le-refine decisive-le-mu0 decisive-le-mu0-refine decisive-le-mu0.2
-# decisive-le-mu0.2-refine decisive-le-mu0-far decisive-walls-phi0.62 decisive-walls bulk-boundary"),
+# decisive-le-mu0.2-refine decisive-le-mu0-far decisive-walls-phi0.62 decisive-walls decisive-walls-refine
+# bulk-boundary"),
 # DILATANT_SKIP_BUILD=1 to use build/ as it is, DILATANT=PATH to run another
 # binary (a study pinned to the version it started with: scripts/pinned-binary.sh;
 # its table is analysed by build/dilatant all the same, into OUT/SWEEP/analysis-current),
@@ -42,7 +43,7 @@ sweeps="fig2 coulomb boundary dst-checks dense-window newtonian-fluid newtonian-
 dst-map dst-map-mu0 dst-map-phi dst-map-dense dst-map-seeds dst-size dst-size-phi dst-map-films sc-scaling
 lees-edwards-fig2 lees-edwards-dst decisive-le decisive-le-mu0.4 decisive-le-mu0.4-refine decisive-le-refine decisive-le-mu0
 decisive-le-mu0-refine decisive-le-mu0.2 decisive-le-mu0.2-refine decisive-le-mu0-far decisive-walls-phi0.62
-decisive-walls bulk-boundary"
+decisive-walls decisive-walls-refine bulk-boundary"
 for sweep in ${DILATANT_PAPER_SWEEPS:-$sweeps}; do
   binary=${DILATANT:-./build/dilatant}
   # A refinement (NAME-refine.toml, sweep.refines) refines NAME's ramps in $out,
@@ -114,7 +115,7 @@ fi
 # sweeps have, and four of seed 1's mu0 0.4 points across the fall drawn.
 intermittent=()
 for sweep in decisive-le-mu0.4 decisive-le-mu0.4-refine decisive-le-mu0 decisive-le-mu0-refine \
-  decisive-le-mu0.2 decisive-le-mu0.2-refine decisive-le-mu0-far decisive-walls; do
+  decisive-le-mu0.2 decisive-le-mu0.2-refine decisive-le-mu0-far decisive-walls decisive-walls-refine; do
   # the sweep's folder if it ran here, else its archive (runs/, gzipped series)
   if [[ -d $out/$sweep/points ]]; then
     intermittent+=("$out/$sweep")
