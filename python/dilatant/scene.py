@@ -14,6 +14,10 @@ True
 A Scene reads its particles from scene.particles (a CSV file) and steps to
 run.time (examples/pile/pile.toml of the source tree: `dilatant.Scene(path)`);
 its contacts are a numpy table. State in code units, as the CLI's files.
+write_checkpoint(file) saves a scene's state and Scene.resumed(config, file)
+goes on from it bit for bit (a long scene stepped by hand survives its
+session); a Sediment stepped by hand has no checkpoint (`dilatant.run` of a
+[sediment] config keeps its finished samples).
 """
 from . import _core
 from .cell import _Stepped
@@ -24,6 +28,15 @@ from .tables import read_table
 class Scene(_Stepped):
     def __init__(self, config, overrides=None):
         self._object = _core.Scene(load_config(config, overrides))
+
+    @classmethod
+    def resumed(cls, config, checkpoint, overrides=None):
+        """Exactly where the scene that wrote `checkpoint` stopped: a `dilatant
+        run`'s checkpoint.bin or write_checkpoint()'s file, for the same
+        particles file (its CRC-32 is checked; ConfigError otherwise)."""
+        scene = cls.__new__(cls)
+        scene._object = _core.Scene.resumed(load_config(config, overrides), checkpoint)
+        return scene
 
     def advance(self, time=None, steps=None):
         """Steps on by `time` or `steps` (whichever first), or until done;

@@ -15,6 +15,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "drivers/scene.hpp"
+#include "drivers/scene_checkpoint.hpp"
 #include "drivers/sediment.hpp"
 #include "drivers/sediment_run.hpp"
 #include "io/contacts_csv.hpp"
@@ -77,6 +78,27 @@ void bind_scenes(py::module_& m) {
                           "A scene step by step (drivers/scene.hpp): particles from "
                           "scene.particles, planes, gravity, to run.time");
   scene.def(py::init(&build_scene), py::arg("config"))
+      .def_static(
+          "resumed",
+          [](const Config& config, const std::filesystem::path& checkpoint) {
+            auto s = build_scene(config);
+            restore_scene(*s, load_scene_checkpoint(checkpoint), config, checkpoint);
+            return s;
+          },
+          py::arg("config"), py::arg("checkpoint"),
+          "Exactly where the scene that wrote `checkpoint` (a `dilatant run`'s or "
+          "write_checkpoint()'s) stopped; the particles file must be the one it was built from")
+      .def(
+          "write_checkpoint",
+          [](const Scene& s, const std::filesystem::path& file) {
+            // No output files belong to a scene stepped by hand: no frame due,
+            // no bytes of series written.
+            save_scene_checkpoint(
+                file, SceneCheckpoint{s.progress(), scene_particles_crc(s.config()), 0.0, 0, 0});
+          },
+          py::arg("file"),
+          "The scene's state, atomically, as `dilatant run` checkpoints it: Scene.resumed() "
+          "goes on from it bit for bit")
       .def(
           "step",
           [](Scene& s) {

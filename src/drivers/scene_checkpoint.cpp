@@ -1,12 +1,17 @@
 #include "drivers/scene_checkpoint.hpp"
 
+#include <fmt/format.h>
+
 #include <cstring>
 #include <stdexcept>
+#include <utility>
 
 #include "io/atomic_file.hpp"
 #include "io/binary_archive.hpp"
 #include "io/checksum.hpp"
 #include "io/contact_memory_archive.hpp"
+#include "io/input_error.hpp"
+#include "io/text.hpp"
 
 namespace dilatant {
 
@@ -89,6 +94,24 @@ SceneCheckpoint read_scene_checkpoint(std::string bytes, const std::filesystem::
   if (p.whole_steps < 0 || p.statistics.steps < 0 || !(p.rest_of_step >= 0.0))
     throw std::runtime_error(file.string() + ": corrupt checkpoint (step counts)");
   return c;
+}
+
+std::uint32_t scene_particles_crc(const Config& config) {
+  return crc32_of(read_input_file(config.scene()->particles, "particles file"));
+}
+
+void restore_scene(Scene& scene, SceneCheckpoint checkpoint, const Config& config,
+                   const std::filesystem::path& file) {
+  if (checkpoint.particles_crc != scene_particles_crc(config))
+    throw InputError(fmt::format(
+        "{}: the particles file changed since the run of {} began (its CRC-32 differs): resume "
+        "with the file it was built from, or run anew",
+        config.scene()->particles.string(), file.string()));
+  try {
+    scene.restore(std::move(checkpoint.progress));
+  } catch (const std::runtime_error& e) {
+    throw InputError(fmt::format("{}: {}", file.string(), e.what()));
+  }
 }
 
 }  // namespace dilatant

@@ -30,4 +30,13 @@ std::string scene_checkpoint_bytes(const SceneCheckpoint& checkpoint);
 SceneCheckpoint load_scene_checkpoint(const std::filesystem::path& file);
 SceneCheckpoint read_scene_checkpoint(std::string bytes, const std::filesystem::path& file);
 
+// The CRC-32 of the particles file a scene of `config` is built from.
+std::uint32_t scene_particles_crc(const Config& config);
+// Puts `scene` (built from `config`) where the checkpoint in `file` left it.
+// Throws InputError naming the particles file when it is not the one the
+// checkpointed run was built from (its CRC-32), and naming `file` when the
+// checkpoint holds another number of bodies.
+void restore_scene(Scene& scene, SceneCheckpoint checkpoint, const Config& config,
+                   const std::filesystem::path& file);
+
 }  // namespace dilatant

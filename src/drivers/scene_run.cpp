@@ -29,15 +29,10 @@ constexpr const char* kTimeseriesHeader =
     "step,t,contacts,iterations,residual,converged,kinetic_energy,max_overlap,"
     "contact_residual_normal,contact_residual_tangential\n";
 
-std::uint32_t particles_crc(const Config& config) {
-  return crc32_of(read_input_file(config.scene()->particles, "particles file"));
-}
-
-// The checkpoint in `out`, checked against this run: the configuration it ran
-// with (its config.toml; only run.time may grow) and the particles file it was
-// built from (`crc`). Anything that does not fit is bad input naming its file.
-SceneCheckpoint resumable_checkpoint(const Config& config, const std::filesystem::path& out,
-                                     std::uint32_t crc) {
+// The checkpoint in `out`, checked against this run's configuration (its
+// config.toml; only run.time may grow); restore_scene checks the particles
+// file. Anything that does not fit is bad input naming its file.
+SceneCheckpoint resumable_checkpoint(const Config& config, const std::filesystem::path& out) {
   static constexpr std::string_view kExtensible[] = {"run.time"};
   if (const auto there = resumable_run_config(out, config, kExtensible, "only run.time may grow")) {
     const double before = (*there)["run"]["time"].value_or(0.0);
@@ -47,13 +42,7 @@ SceneCheckpoint resumable_checkpoint(const Config& config, const std::filesystem
           "shorten one",
           (out / "config.toml").string(), config.run.time, before));
   }
-  SceneCheckpoint checkpoint = load_scene_checkpoint(out / "checkpoint.bin");
-  if (checkpoint.particles_crc != crc)
-    throw InputError(fmt::format(
-        "{}: the particles file changed since the run in {} began (its CRC-32 differs): resume "
-        "with the file it was built from, or run anew without --resume",
-        config.scene()->particles.string(), out.string()));
-  return checkpoint;
+  return load_scene_checkpoint(out / "checkpoint.bin");
 }
 
 }  // namespace
@@ -70,15 +59,12 @@ SceneOutcome run_scene(const Config& config, const SceneRunOptions& options) {
   Scene scene(config);
   const double dt = scene.dt();
   const double frame_interval = config.scene()->trajectory_interval;
-  const std::uint32_t crc = particles_crc(config);
+  const std::uint32_t crc = scene_particles_crc(config);
   std::optional<SceneCheckpoint> resumed;
   if (options.resume && std::filesystem::exists(checkpoint_file)) {
-    resumed = resumable_checkpoint(config, out, crc);
-    try {
-      scene.restore(std::move(resumed->progress));
-    } catch (const std::runtime_error& e) {
-      throw InputError(fmt::format("{}: {}", checkpoint_file.string(), e.what()));
-    }
+    resumed = resumable_checkpoint(config, out);
+    // Its progress moves into the scene; the byte counts and next frame stay.
+    restore_scene(scene, std::move(*resumed), config, checkpoint_file);
     // Nothing left to run: keep the finished run's files as they are.
     if (scene.done())
       return SceneOutcome{scene.statistics().steps, scene.statistics().unconverged, false};
