@@ -334,6 +334,11 @@ def fig1d(out, rows, curve, colours, swept):
     ax.axhline(0.2, color="0.5", ls=":", lw=0.8)
     ax.text(0.01, 0.21, "20% BL (the paper's thickening onset)", fontsize=7, color="0.4",
             transform=ax.get_yaxis_transform())
+    if math.isfinite(curve.contact_onset_rate):
+        # Where P_BL starts to rise for good: the onset the paper's 1/s_c
+        # scaling is about (docs/analysis.md rule 8).
+        ax.axvline(curve.contact_onset_rate, color="0.3", ls="-.", lw=0.8,
+                   label=f"contact onset, rate {curve.contact_onset_rate:.3g} (rule 8)")
     ax.set_xscale("log")
     ax.set_ylim(0, 1)
     ax.set_xlabel(RATE)

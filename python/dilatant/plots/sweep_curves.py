@@ -24,6 +24,8 @@ class Curve:
         self.regime = ""
         self.n = math.nan
         self.bagnold = ""
+        # dilatant analyze's rule 8: where frac_bl starts to rise for good (NaN: none)
+        self.contact_onset_rate = math.nan
 
     def flowing(self):
         return [r for r in self.rows if r["jammed"] != "true"]
@@ -62,4 +64,5 @@ def load_curves(out):
             for c in curves:
                 if c.sample == a["sample"] and c.phi == number(a["phi"]):
                     c.regime, c.n, c.bagnold = a["regime"], number(a["n"]), a.get("bagnold", "")
+                    c.contact_onset_rate = number(a.get("contact_onset_rate"))
     return rows, curves
