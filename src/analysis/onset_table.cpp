@@ -24,7 +24,7 @@ OnsetTable OnsetTable::parse(const NumericCsv& csv) {
                     csv.number(r, c_sc, "s_c"),
                     csv.number(r, c_rate, "onset_rate"),
                     csv.number(r, c_i, "inertial_number"),
-                    c_seed ? static_cast<int>(csv.number(r, *c_seed, "seed")) : 0,
+                    0,
                     csv.text(r, c_model),
                     csv.text(r, c_source)};
     if (o.mu0 < 0.0 || !(o.phi_bulk > 0.0 && o.phi_bulk < 0.74) || !(o.s_c > 0.0) ||
@@ -32,6 +32,12 @@ OnsetTable OnsetTable::parse(const NumericCsv& csv) {
       csv.fail(r, fmt::format("mu0 {}, phi_bulk {}, s_c {}, onset_rate {}, inertial_number {}: "
                               "need mu0 >= 0, phi_bulk in (0, 0.74) and the others > 0",
                               o.mu0, o.phi_bulk, o.s_c, o.onset_rate, o.inertial_number));
+    if (c_seed) {  // a whole number >= 0 (0: not given)
+      const double seed = csv.number(r, *c_seed, "seed");
+      if (!(seed >= 0.0 && seed <= 1e9 && seed == std::floor(seed)))
+        csv.fail(r, fmt::format("seed {}: need a whole number >= 0", seed));
+      o.seed = static_cast<int>(seed);
+    }
     t.onsets_.push_back(std::move(o));
   }
   return t;
@@ -51,13 +57,16 @@ OnsetPrediction predict_onset(const OnsetTable& table, double mu0, double phi, d
       best = &o;
   }
   if (best == nullptr) return out;
-  // Every seed of that state; C and I_c are averaged in log, so the rate is
-  // the geometric mean of the curves' own C I_c^2/s_c.
+  // Every seed of that state (same mu0 and model, phi_bulk within
+  // kOnsetSameState); C and I_c are averaged in log, so the rate is the
+  // geometric mean of the curves' own C I_c^2/s_c.
   double log_c = 0.0, log_i = 0.0, phi_sum = 0.0;
   out.rate_low = HUGE_VAL;
   out.rate_high = 0.0;
   for (const auto& o : table.onsets()) {
-    if (o.mu0 != best->mu0 || std::abs(o.phi_bulk - best->phi_bulk) > kOnsetSameState) continue;
+    if (o.mu0 != best->mu0 || o.model != best->model ||
+        std::abs(o.phi_bulk - best->phi_bulk) > kOnsetSameState)
+      continue;
     const double c = o.onset_rate / onset_rate_scale(o.inertial_number, o.s_c);
     const double rate = c * onset_rate_scale(o.inertial_number, s_c);
     log_c += std::log(c);

@@ -49,13 +49,15 @@ TEST(OnsetTable, UsesTheNearestMeasuredFriction) {
 
 // Two seeds of one state give one prediction: C and I_c are averaged in log,
 // so the rate is the geometric mean of the two curves' own rates, which
-// bound it; a third row at another phi_bulk is another state and stays out.
+// bound it; a row at another phi_bulk, or of another model, is another state
+// and stays out.
 TEST(OnsetTable, AveragesTheSeedsOfOneStateInLog) {
   const auto t = OnsetTable::parse(
       NumericCsv::from_text("mu0,phi_bulk,s_c,onset_rate,inertial_number,seed,model,source\n"
                             "0.4,0.6097,5e-05,1.8,0.040,1,literal,s1\n"
                             "0.4,0.6099,5e-05,1.2,0.030,2,literal,s2\n"
-                            "0.4,0.58,5e-05,9.0,0.050,1,literal,loose\n",
+                            "0.4,0.58,5e-05,9.0,0.050,1,literal,loose\n"
+                            "0.4,0.6098,5e-05,30.0,0.050,1,films,another model\n",
                             "o.csv"));
   const auto at = predict_onset(t, 0.4, 0.61, 5e-5);
   ASSERT_EQ(at.measured.size(), 2u);
@@ -88,6 +90,18 @@ TEST(OnsetTable, RefusesRowsByLine) {
     }
   }
   EXPECT_THROW(OnsetTable::parse(NumericCsv::from_text("mu0,s_c\n", "o.csv")), InputError);
+  // A seed column holds whole numbers.
+  const std::string seeded = "mu0,phi_bulk,s_c,onset_rate,inertial_number,seed,model,source\n";
+  for (const char* seed : {"1.5", "-1"}) {
+    try {
+      OnsetTable::parse(
+          NumericCsv::from_text(seeded + "0.1,0.61,5e-5,0.03,0.01," + seed + ",l,a", "o.csv"));
+      ADD_FAILURE() << seed;
+    } catch (const InputError& e) {
+      EXPECT_THAT(e.what(), HasSubstr("o.csv:2"));
+      EXPECT_THAT(e.what(), HasSubstr("need a whole number >= 0"));
+    }
+  }
 }
 
 TEST(OnsetTable, BuiltInTableIsMeasuredAndBelowThePrefactorOneScale) {
